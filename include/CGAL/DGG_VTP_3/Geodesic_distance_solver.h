@@ -1,0 +1,134 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_GEODESIC_DISTANCE_SOLVER_H
+#define CGAL_DGG_VTP_3_GEODESIC_DISTANCE_SOLVER_H
+
+#include <CGAL/DGG_VTP_3/Propagation_statistics.h>
+#include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/property_map.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+
+/*!
+ * \ingroup PkgDGGVTP3Ref
+ *
+ * Geodesic distances from a source vertex to every vertex of a triangle mesh, by window
+ * propagation: exact (the VTP algorithm) or, with a positive accuracy, by DGG-VTP.
+ *
+ * The constructor does all the per-mesh work once (edge lengths, every triangle unfolded onto each
+ * of its edges, vertex angle sums); the mesh is not read again afterwards and may be destroyed.
+ * Queries are `const` and keep their scratch to themselves, so one solver may serve several
+ * threads at once.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, with triangle faces.
+ * \tparam GeomTraits a model of `DGGVTPTraits_3`; by default the kernel of the mesh's points.
+ *         Its `FT` is the number type of the whole computation (`double` and `float` are supported).
+ * \tparam VertexIndexMap the type of the vertex index map given to the constructor, by default the
+ *         one `CGAL::get_initialized_vertex_index_map()` returns for the mesh.
+ */
+template <class TriangleMesh,
+          class GeomTraits = Default,
+          class VertexIndexMap = Default>
+class Geodesic_distance_solver
+{
+public:
+  using Traits = typename Default::Get<GeomTraits, typename GetGeomTraits<TriangleMesh>::type>::type;
+  using FT = typename Traits::FT;
+  using Vertex_index_map = typename Default::Get<VertexIndexMap,
+                             typename GetInitializedVertexIndexMap<TriangleMesh>::const_type>::type;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+
+  /*!
+   * prepares the mesh for distance queries.
+   *
+   * \param tm a triangle mesh; it is not modified
+   * \param np an optional sequence of named parameters among `vertex_point_map`, `geom_traits`,
+   *           `vertex_index_map` and `face_index_map`, with their usual CGAL meaning
+   *
+   * \throws std::invalid_argument if a face is not a triangle, a coordinate is not finite, or a
+   *         face is degenerate (zero length edge or zero area).
+   */
+  template <class NamedParameters = parameters::Default_named_parameters>
+  explicit Geodesic_distance_solver(const TriangleMesh& tm,
+                                    const NamedParameters& np = parameters::default_values())
+    : m_vim(get_initialized_vertex_index_map(tm, np))
+  {
+    internal::unfold_triangle_mesh(
+      tm,
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm)),
+      m_vim, get_initialized_face_index_map(tm, np),
+      parameters::choose_parameter<Traits>(parameters::get_parameter(np, internal_np::geom_traits)),
+      m_mesh);
+    m_vertices.resize(m_mesh.number_of_vertices());
+    for(vertex_descriptor v : vertices(tm))
+      m_vertices[static_cast<std::size_t>(get(m_vim, v))] = v;
+  }
+
+  /*!
+   * computes the geodesic distance from `source_vertex` to every vertex and writes it into
+   * `distances`. Vertices that no path on the surface reaches (other connected components,
+   * isolated vertices) get `+infinity`.
+   *
+   * \param source_vertex a vertex of the mesh given to the constructor
+   * \param distances a writable vertex property map with value type `FT`
+   * \param np an optional sequence of named parameters:
+   *   - `accuracy`: the DGG-VTP accuracy parameter epsilon >= 0; 0 (the default) is the exact
+   *     algorithm.
+   *
+   * \returns what the propagation did
+   * \throws std::invalid_argument if `source_vertex` is not a vertex of the mesh or the accuracy
+   *         is negative or not finite.
+   */
+  template <class VertexDistanceMap, class NamedParameters = parameters::Default_named_parameters>
+  Propagation_statistics compute_distances(vertex_descriptor source_vertex,
+                                           VertexDistanceMap distances,
+                                           const NamedParameters& np = parameters::default_values()) const
+  {
+    const double accuracy = parameters::choose_parameter(parameters::get_parameter(np, internal_np::accuracy), 0.);
+    if(!(accuracy >= 0.) || !std::isfinite(accuracy))
+      throw std::invalid_argument("the accuracy must be a finite number >= 0");
+    if(accuracy > 0.)
+      throw std::invalid_argument("accuracy > 0 (DGG-VTP) is not implemented yet");
+
+    const std::size_t s = static_cast<std::size_t>(get(m_vim, source_vertex));
+    if(s >= m_vertices.size() || m_vertices[s] != source_vertex)
+      throw std::invalid_argument("the source is not a vertex of the mesh");
+
+    internal::Window_propagation<FT> propagation(m_mesh);
+    propagation.run(static_cast<typename internal::Unfolded_mesh<FT>::Index>(s));
+    const std::vector<FT>& d = propagation.distances();
+    for(std::size_t i = 0; i < m_vertices.size(); ++i)
+      put(distances, m_vertices[i], d[i]);
+    return propagation.statistics();
+  }
+
+  std::size_t number_of_vertices() const { return m_vertices.size(); }
+
+private:
+  Vertex_index_map m_vim;                    // user's vertex -> internal index
+  internal::Unfolded_mesh<FT> m_mesh;        // intrinsic geometry and combinatorics
+  std::vector<vertex_descriptor> m_vertices; // internal index -> user's vertex
+};
+
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_GEODESIC_DISTANCE_SOLVER_H

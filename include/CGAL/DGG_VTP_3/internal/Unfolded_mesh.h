@@ -1,0 +1,264 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_UNFOLDED_MESH_H
+#define CGAL_DGG_VTP_3_INTERNAL_UNFOLDED_MESH_H
+
+#include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cmath>
+#include <algorithm>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// Everything the propagation needs to know about the mesh, computed once per mesh: the intrinsic
+// geometry (edge lengths, each triangle unfolded onto each of its edges) and the combinatorics, in
+// flat arrays indexed by "corner halfedges" `3 * f + k` (face `f`, corner `k`), so that a query
+// never touches the user's mesh data structure again.
+//
+// Halfedge `3f+k` goes from corner `k` to corner `k+1` of face `f`; its frame has corner `k` at the
+// origin, corner `k+1` at `(length, 0)` and corner `k+2`, the apex, at `apex` (with `apex.y > 0`).
+template <class FT>
+class Unfolded_mesh
+{
+public:
+  using Index = std::uint32_t;
+  static constexpr Index no_halfedge = Index(-1);
+
+  std::size_t number_of_vertices() const { return m_vertex_corners_begin.size() - 1; }
+  std::size_t number_of_faces() const { return m_corner_vertex.size() / 3; }
+  std::size_t number_of_halfedges() const { return m_corner_vertex.size(); }
+
+  static Index face(Index h) { return h / 3; }
+  static Index next(Index h) { return h % 3 == 2 ? h - 2 : h + 1; }
+  static Index prev(Index h) { return h % 3 == 0 ? h + 2 : h - 1; }
+
+  // source vertex of halfedge `h` (= the vertex at corner `h`)
+  Index source(Index h) const { return m_corner_vertex[h]; }
+  Index target(Index h) const { return m_corner_vertex[next(h)]; }
+  // the same edge seen from the neighbouring face, or `no_halfedge` on the border
+  Index opposite(Index h) const { return m_opposite[h]; }
+  FT length(Index h) const { return m_length[h]; }
+  const Vec2<FT>& apex(Index h) const { return m_apex[h]; }
+
+  // the corners at vertex `v`: halfedges `h` with `source(h) == v`, in turning order (see
+  // corner_start_angle) unless `v` is singular
+  const Index* corners_begin(Index v) const { return m_vertex_corners.data() + m_vertex_corners_begin[v]; }
+  const Index* corners_end(Index v) const { return m_vertex_corners.data() + m_vertex_corners_begin[v + 1]; }
+
+  // total angle around `v` (2*pi for a flat interior vertex), in radians
+  FT angle_sum(Index v) const { return m_angle_sum[v]; }
+  // the angle of the corner of halfedge `h` at its source
+  FT corner_angle(Index h) const { using std::atan2; return atan2(m_apex[h].y, m_apex[h].x); }
+  // polar angle at source(h) of the direction of `h`; the corner of `h` spans
+  // [corner_start_angle(h), corner_start_angle(h) + corner_angle(h)], corners in turning order
+  FT corner_start_angle(Index h) const { return m_corner_start_angle[h]; }
+  // on the border, or where several umbrellas meet: geodesics may turn there at any angle
+  bool is_singular(Index v) const { return m_singular[v] != 0; }
+  // geodesics may bend there: saddle (angle sum above 2*pi), border or non-manifold vertex
+  bool is_exact_pseudo_source(Index v) const { return m_exact_pseudo_source[v] != 0; }
+
+  // fills the mesh from a user's triangle mesh (a free function: the graph's next(), source()...
+  // would be hidden inside the class by the members of the same names)
+  template <class FT_, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
+            class GeomTraits>
+  friend void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
+                                   FaceIndexMap fim, const GeomTraits& gt, Unfolded_mesh<FT_>& out);
+
+private:
+  std::vector<Index> m_corner_vertex;       // 3F: vertex at each corner
+  std::vector<Index> m_opposite;            // 3F: opposite corner halfedge, or no_halfedge
+  std::vector<FT> m_length;                 // 3F: length of each halfedge
+  std::vector<Vec2<FT>> m_apex;             // 3F: apex in each halfedge's frame
+  std::vector<Index> m_vertex_corners_begin;// V+1: CSR offsets into m_vertex_corners
+  std::vector<Index> m_vertex_corners;      // 3F: corners grouped by vertex, in turning order
+  std::vector<FT> m_corner_start_angle;     // 3F: polar angle of each corner's first edge
+  std::vector<FT> m_angle_sum;              // V: total angle, radians
+  std::vector<char> m_singular;             // V: border or non-manifold vertex
+  std::vector<char> m_exact_pseudo_source;  // V: pseudo-source of the exact (VTP) propagation
+};
+
+template <class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
+          class GeomTraits>
+void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
+                          FaceIndexMap fim, const GeomTraits& gt, Unfolded_mesh<FT>& out)
+{
+  using Index = typename Unfolded_mesh<FT>::Index;
+  constexpr Index no_halfedge = Unfolded_mesh<FT>::no_halfedge;
+  using Graph_traits = boost::graph_traits<TriangleMesh>;
+  using halfedge_descriptor = typename Graph_traits::halfedge_descriptor;
+
+  const std::size_t nv = static_cast<std::size_t>(num_vertices(tm));
+  const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
+  if(!CGAL::is_triangle_mesh(tm))
+    throw std::invalid_argument("the mesh has faces that are not triangles");
+
+  // coordinates, checked once
+  std::vector<FT> xyz(3 * nv);
+  std::vector<char> vertex_seen(nv, 0);
+  typename GeomTraits::Compute_x_3 x_of = gt.compute_x_3_object();
+  typename GeomTraits::Compute_y_3 y_of = gt.compute_y_3_object();
+  typename GeomTraits::Compute_z_3 z_of = gt.compute_z_3_object();
+  for(auto v : vertices(tm))
+  {
+    const std::size_t i = static_cast<std::size_t>(get(vim, v));
+    if(i >= nv || vertex_seen[i])
+      throw std::invalid_argument("the vertex index map is not a bijection onto [0, num_vertices)");
+    vertex_seen[i] = 1;
+    const auto& p = get(vpm, v);
+    xyz[3 * i] = x_of(p);
+    xyz[3 * i + 1] = y_of(p);
+    xyz[3 * i + 2] = z_of(p);
+    for(int c = 0; c < 3; ++c)
+      if(!CGAL::is_finite(xyz[3 * i + c]))
+        throw std::invalid_argument("vertex " + std::to_string(i) + " has a coordinate that is not finite");
+  }
+
+  out.m_corner_vertex.resize(3 * nf);
+  out.m_opposite.resize(3 * nf);
+  out.m_length.resize(3 * nf);
+  out.m_apex.resize(3 * nf);
+  std::vector<char> face_seen(nf, 0);
+  for(auto f : faces(tm))
+  {
+    const std::size_t fi = static_cast<std::size_t>(get(fim, f));
+    if(fi >= nf || face_seen[fi])
+      throw std::invalid_argument("the face index map is not a bijection onto [0, num_faces)");
+    face_seen[fi] = 1;
+    halfedge_descriptor h = halfedge(f, tm);
+    for(int k = 0; k < 3; ++k, h = next(h, tm))
+    {
+      const Index hi = Index(3 * fi + k);
+      out.m_corner_vertex[hi] = Index(get(vim, source(h, tm)));
+      const halfedge_descriptor o = opposite(h, tm);
+      if(is_border(o, tm))
+        out.m_opposite[hi] = no_halfedge;
+      else
+      {
+        const auto fo = face(o, tm);
+        halfedge_descriptor g = halfedge(fo, tm);
+        int ko = 0;
+        while(g != o) { g = next(g, tm); ++ko; }
+        out.m_opposite[hi] = Index(3 * get(fim, fo) + ko);
+      }
+    }
+  }
+
+  // unfold each triangle onto each of its three edges
+  for(std::size_t fi = 0; fi < nf; ++fi)
+  {
+    FT p[3][3];
+    for(int k = 0; k < 3; ++k)
+      for(int c = 0; c < 3; ++c)
+        p[k][c] = xyz[3 * out.m_corner_vertex[3 * fi + k] + c];
+    for(int k = 0; k < 3; ++k)
+    {
+      const FT* a = p[k];
+      const FT* b = p[(k + 1) % 3];
+      const FT* c = p[(k + 2) % 3];
+      const FT ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+      const FT ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      const FT n[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
+      using std::sqrt;
+      const FT len = sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
+      const FT twice_area = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      const Index hi = Index(3 * fi + k);
+      out.m_length[hi] = len;
+      out.m_apex[hi] = {(ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2]) / len, twice_area / len};
+      if(!(len > FT(0)) || !(out.m_apex[hi].y > FT(0)) || !CGAL::is_finite(out.m_apex[hi].x) || !CGAL::is_finite(out.m_apex[hi].y))
+        throw std::invalid_argument("face " + std::to_string(fi) + " is degenerate (zero length edge or zero area)");
+    }
+  }
+
+  // corners around each vertex (CSR), angle sums, border vertices
+  out.m_vertex_corners_begin.assign(nv + 1, 0);
+  for(Index h = 0; h < 3 * nf; ++h)
+    ++out.m_vertex_corners_begin[out.m_corner_vertex[h] + 1];
+  for(std::size_t v = 0; v < nv; ++v)
+    out.m_vertex_corners_begin[v + 1] += out.m_vertex_corners_begin[v];
+  out.m_vertex_corners.resize(3 * nf);
+  {
+    std::vector<Index> fill(out.m_vertex_corners_begin.begin(), out.m_vertex_corners_begin.end() - 1);
+    for(Index h = 0; h < 3 * nf; ++h)
+      out.m_vertex_corners[fill[out.m_corner_vertex[h]]++] = h;
+  }
+
+  out.m_angle_sum.assign(nv, FT(0));
+  out.m_singular.assign(nv, 0);
+  for(Index h = 0; h < 3 * nf; ++h)
+  {
+    out.m_angle_sum[out.source(h)] += out.corner_angle(h);
+    if(out.m_opposite[h] == Unfolded_mesh<FT>::no_halfedge)
+    {
+      out.m_singular[out.source(h)] = 1;
+      out.m_singular[out.target(h)] = 1;
+    }
+  }
+
+  // Put the corners of each vertex in turning order (corner h, then the corner across the edge
+  // prev(h)), starting after the border if there is one, and give each corner the polar angle
+  // at which it starts, so that a direction at a vertex is one number in [0, angle sum).
+  // A vertex whose corners are not one fan (several umbrellas meet there) is singular.
+  out.m_corner_start_angle.assign(3 * nf, FT(0));
+  std::vector<Index> ordered;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    Index* first = out.m_vertex_corners.data() + out.m_vertex_corners_begin[v];
+    Index* last = out.m_vertex_corners.data() + out.m_vertex_corners_begin[v + 1];
+    if(first == last)
+      continue;
+    Index start = *first;
+    for(Index* c = first; c != last; ++c)
+      if(out.m_opposite[*c] == Unfolded_mesh<FT>::no_halfedge)
+        start = *c;
+    ordered.clear();
+    FT angle(0);
+    Index h = start;
+    do
+    {
+      ordered.push_back(h);
+      out.m_corner_start_angle[h] = angle;
+      angle += out.corner_angle(h);
+      const Index across = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
+      if(across == Unfolded_mesh<FT>::no_halfedge)
+        break;
+      h = across;
+    }
+    while(h != start && ordered.size() <= std::size_t(last - first));
+    if(ordered.size() == std::size_t(last - first))
+      std::copy(ordered.begin(), ordered.end(), first);
+    else
+      out.m_singular[v] = 1;
+  }
+
+  // A flat vertex computed as slightly above 2*pi is harmless as a pseudo-source (its windows
+  // are real paths, pruned like any other); one computed slightly below relies on the windows of
+  // either side meeting exactly along the straight line through it, which rounding blurs. So
+  // the test leans towards saddles.
+  const FT two_pi = FT(2 * 3.14159265358979323846);
+  const FT flat_tolerance = FT(1e-6);
+  out.m_exact_pseudo_source.assign(nv, 0);
+  for(std::size_t v = 0; v < nv; ++v)
+    out.m_exact_pseudo_source[v] = out.m_singular[v] || out.m_angle_sum[v] > two_pi * (FT(1) - flat_tolerance);
+}
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_UNFOLDED_MESH_H

@@ -1,0 +1,88 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_WINDOW_LISTS_H
+#define CGAL_DGG_VTP_3_INTERNAL_WINDOW_LISTS_H
+
+#include <CGAL/DGG_VTP_3/internal/Window.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// One window list per halfedge (VTP groups windows by the edge side they sit on), all lists
+// threaded through one pool of windows with a free list: no allocation per window, and memory
+// proportional to the live wavefront, not to the number of windows ever created.
+template <class FT>
+class Window_lists
+{
+public:
+  using Index = std::uint32_t;
+  static constexpr Index nil = Index(-1);
+
+  explicit Window_lists(std::size_t number_of_halfedges)
+    : m_head(number_of_halfedges, nil)
+  {}
+
+  bool empty(Index h) const { return m_head[h] == nil; }
+
+  void push(Index h, const Window<FT>& w)
+  {
+    Index i;
+    if(m_free != nil)
+    {
+      i = m_free;
+      m_free = m_pool[i].next;
+      m_pool[i] = w;
+    }
+    else
+    {
+      i = Index(m_pool.size());
+      m_pool.push_back(w);
+    }
+    m_pool[i].next = m_head[h];
+    m_head[h] = i;
+    ++m_created;
+    if(++m_live > m_peak)
+      m_peak = m_live;
+  }
+
+  // moves the windows of list `h` into `out` (cleared first) and empties the list
+  void take(Index h, std::vector<Window<FT>>& out)
+  {
+    out.clear();
+    Index i = m_head[h];
+    m_head[h] = nil;
+    while(i != nil)
+    {
+      out.push_back(m_pool[i]);
+      const Index n = m_pool[i].next;
+      m_pool[i].next = m_free;
+      m_free = i;
+      --m_live;
+      i = n;
+    }
+  }
+
+  std::size_t created() const { return m_created; }
+  std::size_t peak() const { return m_peak; }
+
+private:
+  std::vector<Index> m_head;      // per halfedge: first window of its list, or nil
+  std::vector<Window<FT>> m_pool; // windows, live or free
+  Index m_free = nil;             // first free slot of the pool
+  std::size_t m_live = 0;         // windows currently stored in lists
+  std::size_t m_peak = 0;         // maximum of m_live
+  std::size_t m_created = 0;      // windows ever stored
+};
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_WINDOW_LISTS_H

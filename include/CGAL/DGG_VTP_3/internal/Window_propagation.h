@@ -1,0 +1,544 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_WINDOW_PROPAGATION_H
+#define CGAL_DGG_VTP_3_INTERNAL_WINDOW_PROPAGATION_H
+
+#include <CGAL/DGG_VTP_3/Propagation_statistics.h>
+#include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Window.h>
+#include <CGAL/DGG_VTP_3/internal/Window_lists.h>
+#include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
+
+#include <boost/heap/d_ary_heap.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <functional>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// One single-source propagation (paper, Algorithm 1) over an Unfolded_mesh: the per-query
+// scratch of the const queries of Geodesic_distance_solver.
+//
+// Windows sit in per-halfedge window lists; a vertex-oriented priority queue pops the nearest
+// vertex, which may emit windows as a pseudo-source and brings its faces into the propagation
+// region R; then the window lists inside R are propagated in FIFO order until every window has
+// left R. Pruning is by the ICH rule (as interval trimming against the edge's end vertices) and
+// by "one angle, two sides". With accuracy 0 this is the exact VTP algorithm: only saddle,
+// border and non-manifold vertices are pseudo-sources and windows travel without bound.
+template <class FT>
+class Window_propagation
+{
+  using Mesh = Unfolded_mesh<FT>;
+  using Index = typename Mesh::Index;
+  using Point = Vec2<FT>;
+  using Win = Window<FT>;
+
+public:
+  explicit Window_propagation(const Mesh& mesh)
+    : m_mesh(mesh)
+    , m_distance(mesh.number_of_vertices(), infinity())
+    , m_incoming(mesh.number_of_vertices())
+    , m_in_region(mesh.number_of_faces(), 0)
+    , m_scheduled(mesh.number_of_halfedges(), 0)
+    , m_lists(mesh.number_of_halfedges())
+  {}
+
+  static FT infinity() { return std::numeric_limits<FT>::infinity(); }
+
+  void run(Index source_vertex)
+  {
+    m_distance[source_vertex] = FT(0);
+    m_queue.push(Queue_entry(FT(0), source_vertex));
+    for(;;)
+    {
+      // lines 9-29
+      while(!m_queue.empty())
+      {
+        const Queue_entry top = m_queue.top();
+        m_queue.pop();
+        const Index v = top.second;
+        if(top.first > m_distance[v])
+          continue; // superseded by a later, shorter distance
+        ++m_stats.vertices_popped;
+        if(v == source_vertex || m_mesh.is_singular(v))
+          emit_pseudo_source_windows(v, m_mesh.corners_begin(v), m_mesh.corners_end(v));
+        else if(m_mesh.is_exact_pseudo_source(v))
+          emit_pseudo_source_windows_in_shadow(v);
+        enter_propagation_region(v);
+        propagate_scheduled_lists();
+      }
+      // A window list can only be waiting outside R if none of its face's vertices was ever
+      // reached, which well-formed input does not produce; rather than lose its windows, bring
+      // such faces into R and go on.
+      if(!schedule_stranded_lists())
+        break;
+      propagate_scheduled_lists();
+    }
+    m_stats.windows_created = m_lists.created();
+    m_stats.windows_peak = m_lists.peak();
+    for(const FT& d : m_distance)
+      if(d < infinity())
+        ++m_stats.vertices_reached;
+  }
+
+  const std::vector<FT>& distances() const { return m_distance; }
+  const Propagation_statistics& statistics() const { return m_stats; }
+
+private:
+  using Queue_entry = std::pair<FT, Index>;
+  using Queue = boost::heap::d_ary_heap<Queue_entry, boost::heap::arity<4>,
+                                        boost::heap::compare<std::greater<Queue_entry>>>;
+
+  // ---------------------------------------------------------------------------------------------
+  // vertices
+
+  // Lines 23-24: a path of length `d` reaches `v`, arriving from the polar angle `back` at `v`
+  // (the direction pointing back along the path). Paths that tie with the best one widen the
+  // recorded range of arrival directions: the shadow of a saddle is the union of their shadows.
+  void relax(Index v, FT d, FT back)
+  {
+    const FT dv = m_distance[v];
+    Incoming& in = m_incoming[v];
+    if(d < dv - margin(dv) || dv == infinity())
+    {
+      m_distance[v] = d;
+      in.low = in.high = back;
+      m_queue.push(Queue_entry(d, v));
+    }
+    else if(d <= dv + margin(dv) && !(in.low <= back && back <= in.high))
+    {
+      in.low = (std::min)(in.low, back);
+      in.high = (std::max)(in.high, back);
+      if(d < dv)
+        m_distance[v] = d;
+      m_queue.push(Queue_entry(m_distance[v], v)); // emit the wider shadow if already popped
+    }
+  }
+
+  // Lines 11-13 of the exact algorithm: a shortest path bends at a saddle only if it turns by at
+  // least pi on both sides, so a saddle emits windows only into the faces that meet the cone
+  // [back + pi, back + angle_sum - pi] of the directions it arrived from, widened by a small
+  // angle for rounding (emitting more is always safe: windows are real paths, pruned later).
+  void emit_pseudo_source_windows_in_shadow(Index v)
+  {
+    const FT theta = m_mesh.angle_sum(v);
+    const FT pi = FT(3.14159265358979323846);
+    const Incoming& in = m_incoming[v];
+    const FT widen = FT(8) * std::sqrt(margin(FT(1)));
+    // the union over the arrival directions b in [low, high] of [b + pi, b + theta - pi]
+    FT from = in.low + pi - widen;
+    const FT width = (in.high + theta - pi + widen) - from;
+    if(!(width < theta))
+    {
+      emit_pseudo_source_windows(v, m_mesh.corners_begin(v), m_mesh.corners_end(v));
+      return;
+    }
+    from = std::fmod(from, theta);
+    if(from < FT(0))
+      from += theta;
+    // the cone is [from, from + width] on the circle of length theta; corners in turning order
+    ++m_stats.pseudo_sources;
+    for(const Index* c = m_mesh.corners_begin(v); c != m_mesh.corners_end(v); ++c)
+    {
+      const FT start = m_mesh.corner_start_angle(*c);
+      const FT end = start + m_mesh.corner_angle(*c);
+      const bool meets = (end >= from && start <= from + width) ||
+                         (end + theta >= from && start + theta <= from + width);
+      if(meets)
+        emit_window_across_corner(v, *c);
+    }
+  }
+
+  void emit_pseudo_source_windows(Index v, const Index* first, const Index* last)
+  {
+    ++m_stats.pseudo_sources;
+    for(const Index* c = first; c != last; ++c)
+      emit_window_across_corner(v, *c);
+  }
+
+  // a full-edge window on the edge opposite `v` in the face of corner `h`, and the distances of
+  // the corner's two other vertices along its edges
+  void emit_window_across_corner(Index v, Index h)
+  {
+    const FT dv = m_distance[v];
+    const Index across = Mesh::next(h); // the edge opposite v; its apex is v
+    const Index prev = Mesh::prev(h);
+    relax(m_mesh.target(h), dv + m_mesh.length(h),
+          m_mesh.corner_start_angle(across) + m_mesh.corner_angle(across));
+    relax(m_mesh.source(prev), dv + m_mesh.length(prev), m_mesh.corner_start_angle(prev));
+    const Index t = m_mesh.opposite(across);
+    if(t == Mesh::no_halfedge)
+      return;
+    const FT len = m_mesh.length(across);
+    const Point& apex = m_mesh.apex(across);
+    Win w;
+    w.b0 = FT(0);
+    w.b1 = len;
+    w.source = Point{len - apex.x, -apex.y}; // the same triangle seen from the other side
+    w.sigma = dv;
+    w.relay_left = w.relay_right = FT(0);
+    w.d_max = infinity();
+    add_window(t, w);
+  }
+
+  // lines 14-15
+  void enter_propagation_region(Index v)
+  {
+    for(const Index* c = m_mesh.corners_begin(v); c != m_mesh.corners_end(v); ++c)
+    {
+      const Index f = Mesh::face(*c);
+      if(m_in_region[f])
+        continue;
+      m_in_region[f] = 1;
+      for(Index h = 3 * f; h < 3 * f + 3; ++h)
+        schedule(h);
+    }
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // window lists
+
+  void schedule(Index h)
+  {
+    if(!m_scheduled[h] && !m_lists.empty(h))
+    {
+      m_scheduled[h] = 1;
+      m_fifo.push_back(h);
+    }
+  }
+
+  void add_window(Index h, const Win& w)
+  {
+    m_lists.push(h, w);
+    if(m_in_region[Mesh::face(h)])
+      schedule(h);
+  }
+
+  bool schedule_stranded_lists()
+  {
+    bool found = false;
+    for(Index h = 0; h < m_mesh.number_of_halfedges(); ++h)
+      if(!m_lists.empty(h) && !m_scheduled[h])
+      {
+        m_in_region[Mesh::face(h)] = 1;
+        schedule(h);
+        found = true;
+      }
+    return found;
+  }
+
+  // lines 16-28
+  void propagate_scheduled_lists()
+  {
+    while(!m_fifo.empty())
+    {
+      const Index h = m_fifo.front();
+      m_fifo.pop_front();
+      m_scheduled[h] = 0;
+      propagate_window_list(h);
+    }
+  }
+
+  // Lines 17-27 for the window list of halfedge `h`: its windows cross the face of `h`, from
+  // edge (a, b) towards the apex c, and leave through edge (c, a) (left) or (b, c) (right).
+  void propagate_window_list(Index h)
+  {
+    m_lists.take(h, m_buffer);
+    const Index apex_vertex = m_mesh.source(Mesh::prev(h));
+    const Point& c = m_mesh.apex(h);
+
+    // line 18: ICH rule
+    std::size_t kept = 0;
+    for(Win& w : m_buffer)
+      if(trim_by_end_vertices(h, w))
+        m_buffer[kept++] = w;
+    m_buffer.resize(kept);
+    trim_overlapping_windows();
+
+    // "one angle, two sides": the window that reaches c best splits the face along its ray to c;
+    // another window that also lights c but lies entirely on one side of that ray keeps only its
+    // child on that side: its paths to the other side would cross the best path to c, which is
+    // no longer than theirs where they meet (a window that does not light c has no such bound)
+    FT best_distance = infinity();
+    FT best_crossing = FT(0);
+    const Win* best = nullptr;
+    for(const Win& w : m_buffer)
+    {
+      const FT x = x_axis_crossing(w.source, c);
+      if(w.b0 <= x && x <= w.b1)
+      {
+        const FT d = w.distance_to(c);
+        if(d < best_distance)
+        {
+          best_distance = d;
+          best_crossing = x;
+          best = &w;
+        }
+      }
+    }
+    if(best != nullptr) // lines 21-24 for the apex
+    {
+      // arrival direction at c, measured in c's corner, which starts along c -> a
+      const Point to_a = Point{FT(0), FT(0)} - c;
+      const Point back = best->source - c;
+      using std::atan2;
+      relax(apex_vertex, best_distance,
+            m_mesh.corner_start_angle(Mesh::prev(h)) + atan2(cross(to_a, back), dot(to_a, back)));
+    }
+
+    const Index left = m_mesh.opposite(Mesh::prev(h));
+    const Index right = m_mesh.opposite(Mesh::next(h));
+    for(const Win& w : m_buffer)
+    {
+      const FT x = x_axis_crossing(w.source, c);
+      const bool lights_apex = w.b0 <= x && x <= w.b1;
+      if(left != Mesh::no_halfedge && w.b0 < x && !(lights_apex && w.b0 >= best_crossing))
+        add_left_child(h, w, x, left);
+      if(right != Mesh::no_halfedge && x < w.b1 && !(lights_apex && w.b1 <= best_crossing))
+        add_right_child(h, w, x, right);
+    }
+  }
+
+  // The ICH rule (Xin and Wang), applied as trimming: the part of the interval where reaching the
+  // edge through its end vertex a (or b) is strictly shorter carries no shortest path, here or
+  // beyond. Along the edge `sigma + |p - s| - |p - a|` only decreases, so that part is a prefix
+  // (a suffix for b) found in closed form. Returns false when nothing of the window is left.
+  bool trim_by_end_vertices(Index h, Win& w) const
+  {
+    const FT len = m_mesh.length(h);
+    const FT sx = w.source.x;
+    const FT ss = sx * sx + w.source.y * w.source.y;
+    const FT da = m_distance[m_mesh.source(h)];
+    if(da < infinity())
+    {
+      // reaching p = (t, 0) through a costs da + t (a margin keeps rounding from trimming ties)
+      const FT k = da + margin(da + len) - w.sigma;
+      if(w.distance_to_base_point(w.b1) > k + w.sigma + w.b1)
+        return false;
+      if(w.distance_to_base_point(w.b0) > k + w.sigma + w.b0)
+        shrink_to(w, (ss - k * k) / (FT(2) * (k + sx)), w.b0);
+    }
+    const FT db = m_distance[m_mesh.target(h)];
+    if(db < infinity())
+    {
+      // through b it costs db + len - t
+      const FT k = db + margin(db + len) + len - w.sigma;
+      if(w.distance_to_base_point(w.b0) > k + w.sigma - w.b0)
+        return false;
+      if(w.distance_to_base_point(w.b1) > k + w.sigma - w.b1)
+        shrink_to(w, (k * k - ss) / (FT(2) * (k - sx)), w.b1);
+    }
+    return w.b0 < w.b1;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // pairwise trimming (as in MMP and VTP): where two windows of one list overlap, the part of one
+  // that is everywhere farther than the other carries no shortest path and is cut off
+
+  void trim_overlapping_windows()
+  {
+    if(m_buffer.size() < 2)
+      return;
+    std::sort(m_buffer.begin(), m_buffer.end(), [](const Win& a, const Win& b) { return a.b0 < b.b0; });
+    m_starts.resize(m_buffer.size());
+    for(std::size_t i = 0; i < m_buffer.size(); ++i)
+      m_starts[i] = m_buffer[i].b0;
+    for(std::size_t i = 0; i < m_buffer.size(); ++i)
+      for(std::size_t j = i + 1; j < m_buffer.size() && m_starts[j] < m_buffer[i].b1; ++j)
+        if(m_buffer[i].b0 < m_buffer[i].b1)
+          trim_pair(m_buffer[i], m_buffer[j]);
+    std::size_t kept = 0;
+    for(const Win& w : m_buffer)
+      if(w.b0 < w.b1)
+        m_buffer[kept++] = w;
+    m_buffer.resize(kept);
+  }
+
+  // `u` starts no later than `w`. Their overlap is cut where D_u - D_w = 0 (a hyperbola meets the
+  // edge at most twice); on each piece in between the difference has one sign, sampled at the
+  // piece's ends and middle. A piece where the two tie within rounding goes to `u`; a piece
+  // whose samples disagree is left alone.
+  void trim_pair(Win& u, Win& w) const
+  {
+    const FT lo = (std::max)(u.b0, w.b0);
+    const FT hi = (std::min)(u.b1, w.b1);
+    if(!(lo < hi))
+      return;
+    FT cuts[4];
+    int n = 0;
+    cuts[n++] = lo;
+    n += equal_distance_points(u, w, lo, hi, cuts + n);
+    cuts[n++] = hi;
+    std::sort(cuts + 1, cuts + n - 1);
+
+    // per piece, the sign of D_u - D_w: +1 u is farther, -1 w is farther or they tie, 0 unknown
+    int sign[3];
+    for(int k = 0; k + 1 < n; ++k)
+    {
+      const FT t[3] = {cuts[k], (cuts[k] + cuts[k + 1]) / FT(2), cuts[k + 1]};
+      FT fmin = infinity(), fmax = -infinity();
+      for(const FT x : t)
+      {
+        const FT du = u.distance_to_base_point(x);
+        const FT f = du - w.distance_to_base_point(x);
+        const FT m = margin(du);
+        fmin = (std::min)(fmin, f / m);
+        fmax = (std::max)(fmax, f / m);
+      }
+      sign[k] = fmin > FT(1) ? 1 : (fmax < FT(1) && fmin > -FT(1)) || fmax < -FT(1) ? -1 : 0;
+    }
+    const int pieces = n - 1;
+    int opposite_sign[3];
+    for(int k = 0; k < pieces; ++k)
+      opposite_sign[k] = -sign[k];
+    cut_where_farther(w, cuts, sign, pieces);
+    cut_where_farther(u, cuts, opposite_sign, pieces);
+  }
+
+  // `x` is farther on the pieces [cuts[k], cuts[k+1]] with farther[k] == -1: cut off the run of
+  // such pieces at either end of the overlap, where that end is also an end of `x`
+  static void cut_where_farther(Win& x, const FT* cuts, const int* farther, int pieces)
+  {
+    int first = 0;
+    while(first < pieces && farther[first] == -1)
+      ++first;
+    int last = pieces;
+    while(last > first && farther[last - 1] == -1)
+      --last;
+    const bool starts_x = cuts[0] == x.b0;
+    const bool ends_x = cuts[pieces] == x.b1;
+    if(first == pieces) // farther on the whole overlap
+    {
+      if(starts_x && ends_x)
+        x.b1 = x.b0;
+      else if(starts_x)
+        x.b0 = cuts[pieces];
+      else if(ends_x)
+        x.b1 = cuts[0];
+      return;
+    }
+    if(starts_x && first > 0)
+      x.b0 = cuts[first];
+    if(ends_x && last < pieces)
+      x.b1 = cuts[last];
+  }
+
+  // The points of (lo, hi) where the two windows give equal distances: sigma_u + r_u = sigma_w + r_w.
+  // Squaring twice gives a quadratic; its spurious roots only add harmless piece boundaries.
+  static int equal_distance_points(const Win& u, const Win& w, FT lo, FT hi, FT* out)
+  {
+    const FT xu = u.source.x, yu = u.source.y, xw = w.source.x, yw = w.source.y;
+    const FT delta = w.sigma - u.sigma;
+    // r_u^2 - r_w^2 = A t + B, so A t + B - delta^2 = 2 delta r_w
+    const FT A = FT(2) * (xw - xu);
+    const FT C = (xu * xu + yu * yu - xw * xw - yw * yw) - delta * delta;
+    const FT d2 = FT(4) * delta * delta;
+    const FT a = A * A - d2;
+    const FT b = FT(2) * A * C + d2 * FT(2) * xw;
+    const FT c = C * C - d2 * (xw * xw + yw * yw);
+    int n = 0;
+    auto keep = [&](FT t) { if(lo < t && t < hi) out[n++] = t; };
+    const FT scale = (std::max)((std::abs)(a), (std::max)((std::abs)(b), (std::abs)(c)));
+    if(!(scale > FT(0)))
+      return 0;
+    if((std::abs)(a) <= margin(scale))
+    {
+      if(b != FT(0))
+        keep(-c / b);
+      return n;
+    }
+    const FT disc = b * b - FT(4) * a * c;
+    if(disc < FT(0))
+      return 0;
+    using std::sqrt;
+    const FT q = -(b + (b < FT(0) ? -sqrt(disc) : sqrt(disc))) / FT(2);
+    keep(q / a);
+    if(q != FT(0))
+      keep(c / q);
+    return n;
+  }
+
+  static FT margin(FT scale) { return FT(64) * std::numeric_limits<FT>::epsilon() * scale; }
+  // moves one end of the interval to `t` if `t` lies strictly inside it; a crossing that
+  // rounding puts outside (or a NaN) leaves the window whole, which is always safe
+  static void shrink_to(const Win& w, FT t, FT& end)
+  {
+    if(w.b0 < t && t < w.b1)
+      end = t;
+  }
+
+  // child on edge (a, c), in the frame of the neighbouring halfedge a -> c; `x` is where the
+  // window's ray to c crosses the base
+  void add_left_child(Index h, const Win& w, FT x, Index left)
+  {
+    const Point& c = m_mesh.apex(h);
+    const FT len = m_mesh.length(Mesh::prev(h));
+    const Point a{FT(0), FT(0)};
+    const FT u0 = ray_segment_parameter(w.source, Point{w.b0, FT(0)}, a, c);
+    const FT u1 = x < w.b1 ? FT(1) : ray_segment_parameter(w.source, Point{w.b1, FT(0)}, a, c);
+    if(!(u0 < u1))
+      return;
+    Win child = w;
+    child.b0 = u0 * len;
+    child.b1 = u1 * len;
+    child.source = to_neighbour_frame(w.source, a, c, len);
+    if(trim_by_end_vertices(left, child))
+      add_window(left, child);
+  }
+
+  // child on edge (b, c), in the frame of the neighbouring halfedge c -> b
+  void add_right_child(Index h, const Win& w, FT x, Index right)
+  {
+    const Point& c = m_mesh.apex(h);
+    const FT len = m_mesh.length(Mesh::next(h));
+    const Point b{m_mesh.length(h), FT(0)};
+    const FT v0 = w.b0 < x ? FT(0) : ray_segment_parameter(w.source, Point{w.b0, FT(0)}, c, b);
+    const FT v1 = ray_segment_parameter(w.source, Point{w.b1, FT(0)}, c, b);
+    if(!(v0 < v1))
+      return;
+    Win child = w;
+    child.b0 = v0 * len;
+    child.b1 = v1 * len;
+    child.source = to_neighbour_frame(w.source, c, b - c, len);
+    if(trim_by_end_vertices(right, child))
+      add_window(right, child);
+  }
+
+  // ---------------------------------------------------------------------------------------------
+
+  const Mesh& m_mesh;
+  // polar angles at a vertex (see Unfolded_mesh::corner_start_angle) of the directions back along
+  // the shortest paths found so far; a range when several paths tie
+  struct Incoming
+  {
+    FT low = FT(0);
+    FT high = FT(0);
+  };
+
+  std::vector<FT> m_distance;         // per vertex: best distance found so far (+inf: not reached)
+  std::vector<Incoming> m_incoming;   // per vertex: arrival directions of its best paths
+  std::vector<char> m_in_region;      // per face: inside the propagation region R
+  std::vector<char> m_scheduled;      // per halfedge: its window list is in the FIFO
+  Window_lists<FT> m_lists;           // per halfedge: windows entering its face
+  Queue m_queue;                      // vertex-oriented priority queue Q (lazy deletion)
+  std::deque<Index> m_fifo;           // FIFO F of window lists to propagate
+  std::vector<Win> m_buffer;          // the window list being propagated
+  std::vector<FT> m_starts;           // its windows' starts, sorted, before pairwise trimming
+  Propagation_statistics m_stats;
+};
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_WINDOW_PROPAGATION_H
