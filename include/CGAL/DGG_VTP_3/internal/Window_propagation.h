@@ -381,20 +381,21 @@ private:
     cuts[n++] = hi;
     std::sort(cuts + 1, cuts + n - 1);
 
-    // per piece, the sign of D_u - D_w: +1 u is farther, -1 w is farther or they tie, 0 unknown
+    // per piece, the sign of D_u - D_w: +1 u is farther, -1 w is farther or they tie, 0 unknown;
+    // the difference, in units of the rounding margin, at the cuts and at the pieces' middles
+    FT at_cut[4];
+    const auto difference = [&](FT x) {
+      const FT du = u.distance_to_base_point(x);
+      return (du - w.distance_to_base_point(x)) / margin(du);
+    };
+    for(int k = 0; k < n; ++k)
+      at_cut[k] = difference(cuts[k]);
     int sign[3];
     for(int k = 0; k + 1 < n; ++k)
     {
-      const FT t[3] = {cuts[k], (cuts[k] + cuts[k + 1]) / FT(2), cuts[k + 1]};
-      FT fmin = infinity(), fmax = -infinity();
-      for(const FT x : t)
-      {
-        const FT du = u.distance_to_base_point(x);
-        const FT f = du - w.distance_to_base_point(x);
-        const FT m = margin(du);
-        fmin = (std::min)(fmin, f / m);
-        fmax = (std::max)(fmax, f / m);
-      }
+      const FT at_middle = difference((cuts[k] + cuts[k + 1]) / FT(2));
+      const FT fmin = (std::min)(at_middle, (std::min)(at_cut[k], at_cut[k + 1]));
+      const FT fmax = (std::max)(at_middle, (std::max)(at_cut[k], at_cut[k + 1]));
       sign[k] = fmin > FT(1) ? 1 : (fmax < FT(1) && fmin > -FT(1)) || fmax < -FT(1) ? -1 : 0;
     }
     const int pieces = n - 1;
@@ -492,8 +493,7 @@ private:
     child.b0 = u0 * len;
     child.b1 = u1 * len;
     child.source = to_neighbour_frame(w.source, a, c, len);
-    if(trim_by_end_vertices(left, child))
-      add_window(left, child);
+    add_window(left, child);
   }
 
   // child on edge (b, c), in the frame of the neighbouring halfedge c -> b
@@ -510,8 +510,7 @@ private:
     child.b0 = v0 * len;
     child.b1 = v1 * len;
     child.source = to_neighbour_frame(w.source, c, b - c, len);
-    if(trim_by_end_vertices(right, child))
-      add_window(right, child);
+    add_window(right, child);
   }
 
   // ---------------------------------------------------------------------------------------------

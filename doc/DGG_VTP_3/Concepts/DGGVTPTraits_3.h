@@ -1,0 +1,31 @@
+/*!
+\ingroup PkgDGGVTP3Concepts
+\cgalConcept
+
+The geometric traits of `CGAL::DGG_VTP_3::Geodesic_distance_solver`. It is deliberately tiny:
+the propagation reads each point's Cartesian coordinates once, in the constructor, and does all
+its geometry (edge lengths, unfolding of triangles onto the plane) in `FT` with internal structs.
+The test suite compiles an archetype with exactly these members, so this page cannot drift from
+what the code needs.
+
+\cgalHasModel All models of `Kernel` (e.g. `CGAL::Exact_predicates_inexact_constructions_kernel`,
+`CGAL::Simple_cartesian<float>`).
+*/
+class DGGVTPTraits_3
+{
+public:
+  /// The number type of the whole computation. `double` and `float` are supported; it must provide
+  /// `sqrt`, `atan2`, `fmod` (found by argument-dependent lookup or in `std`) and `std::numeric_limits`
+  /// with infinity and epsilon.
+  typedef unspecified_type FT;
+  /// The point type of the mesh's vertex point map.
+  typedef unspecified_type Point_3;
+  /// Function objects `FT operator()(const Point_3&) const` returning a Cartesian coordinate.
+  typedef unspecified_type Compute_x_3;
+  typedef unspecified_type Compute_y_3;
+  typedef unspecified_type Compute_z_3;
+
+  Compute_x_3 compute_x_3_object() const;
+  Compute_y_3 compute_y_3_object() const;
+  Compute_z_3 compute_z_3_object() const;
+};
