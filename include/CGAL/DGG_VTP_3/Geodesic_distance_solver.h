@@ -105,14 +105,12 @@ public:
     const double accuracy = parameters::choose_parameter(parameters::get_parameter(np, internal_np::accuracy), 0.);
     if(!(accuracy >= 0.) || !std::isfinite(accuracy))
       throw std::invalid_argument("the accuracy must be a finite number >= 0");
-    if(accuracy > 0.)
-      throw std::invalid_argument("accuracy > 0 (DGG-VTP) is not implemented yet");
 
     const std::size_t s = static_cast<std::size_t>(get(m_vim, source_vertex));
     if(s >= m_vertices.size() || m_vertices[s] != source_vertex)
       throw std::invalid_argument("the source is not a vertex of the mesh");
 
-    internal::Window_propagation<FT> propagation(m_mesh);
+    internal::Window_propagation<FT> propagation(m_mesh, FT(accuracy));
     propagation.run(static_cast<typename internal::Unfolded_mesh<FT>::Index>(s));
     const std::vector<FT>& d = propagation.distances();
     for(std::size_t i = 0; i < m_vertices.size(); ++i)

@@ -7,6 +7,7 @@
 #define CGAL_DGG_VTP_3_INTERNAL_WINDOW_PROPAGATION_H
 
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
+#include <CGAL/DGG_VTP_3/internal/Distance_bound.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
 #include <CGAL/DGG_VTP_3/internal/Window_lists.h>
@@ -44,8 +45,11 @@ class Window_propagation
   using Win = Window<FT>;
 
 public:
-  explicit Window_propagation(const Mesh& mesh)
+  // `accuracy` is the user's epsilon: 0 for the exact algorithm
+  Window_propagation(const Mesh& mesh, FT accuracy)
     : m_mesh(mesh)
+    , m_bound_epsilon(bound_epsilon(accuracy))
+    , m_fan_half_width(fan_half_width(accuracy))
     , m_distance(mesh.number_of_vertices(), infinity())
     , m_incoming(mesh.number_of_vertices())
     , m_in_region(mesh.number_of_faces(), 0)
@@ -72,6 +76,8 @@ public:
         ++m_stats.vertices_popped;
         if(v == source_vertex || m_mesh.is_singular(v))
           emit_pseudo_source_windows(v, m_mesh.corners_begin(v), m_mesh.corners_end(v));
+        else if(is_dgg())
+          emit_pseudo_source_windows_in_fan(v);
         else if(m_mesh.is_exact_pseudo_source(v))
           emit_pseudo_source_windows_in_shadow(v);
         enter_propagation_region(v);
@@ -132,17 +138,37 @@ private:
   void emit_pseudo_source_windows_in_shadow(Index v)
   {
     const FT theta = m_mesh.angle_sum(v);
-    const FT pi = FT(3.14159265358979323846);
-    const Incoming& in = m_incoming[v];
     const FT widen = FT(8) * std::sqrt(margin(FT(1)));
-    // the union over the arrival directions b in [low, high] of [b + pi, b + theta - pi]
-    FT from = in.low + pi - widen;
-    const FT width = (in.high + theta - pi + widen) - from;
+    emit_pseudo_source_windows_in_cone(v, pi() - widen, theta - pi() + widen);
+  }
+
+  // Lines 11-12 of DGG-VTP: every vertex is a pseudo-source, but only inside its fan, the
+  // directions nearly straight ahead of the geodesic that reached it (paper, Fig. 5): the
+  // straight continuations on the two sides, back + pi and back + angle_sum - pi, widened by the
+  // fan half-width on both sides (for a convex vertex they swap places).
+  void emit_pseudo_source_windows_in_fan(Index v)
+  {
+    const FT theta = m_mesh.angle_sum(v);
+    const FT left = pi(), right = theta - pi();
+    emit_pseudo_source_windows_in_cone(v, (std::min)(left, right) - m_fan_half_width,
+                                       (std::max)(left, right) + m_fan_half_width);
+  }
+
+  // windows into the faces that meet [back + from, back + to] for some recorded arrival
+  // direction back (a union of cones sliding with back)
+  void emit_pseudo_source_windows_in_cone(Index v, FT from_back, FT to_back)
+  {
+    const FT theta = m_mesh.angle_sum(v);
+    const Incoming& in = m_incoming[v];
+    FT from = in.low + from_back;
+    const FT width = (in.high + to_back) - from;
     if(!(width < theta))
     {
       emit_pseudo_source_windows(v, m_mesh.corners_begin(v), m_mesh.corners_end(v));
       return;
     }
+    if(width < FT(0))
+      return;
     from = std::fmod(from, theta);
     if(from < FT(0))
       from += theta;
@@ -186,8 +212,11 @@ private:
     w.b1 = len;
     w.source = Point{len - apex.x, -apex.y}; // the same triangle seen from the other side
     w.sigma = dv;
-    w.relay_left = w.relay_right = FT(0);
-    w.d_max = infinity();
+    // line 3 (and 12): the CH-relay vertices of a new window are the ends of its edge
+    w.relay_left = m_mesh.length(prev);
+    w.relay_right = m_mesh.length(h);
+    w.d_max = is_dgg() ? distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, m_bound_epsilon)
+                       : infinity();
     add_window(t, w);
   }
 
@@ -257,13 +286,14 @@ private:
     const Index apex_vertex = m_mesh.source(Mesh::prev(h));
     const Point& c = m_mesh.apex(h);
 
-    // line 18: ICH rule
+    // line 18: distance bound and ICH rule
     std::size_t kept = 0;
     for(Win& w : m_buffer)
-      if(trim_by_end_vertices(h, w))
+      if(!(distance_to_interval(w.source, w.b0, w.b1) > w.d_max) && trim_by_end_vertices(h, w))
         m_buffer[kept++] = w;
     m_buffer.resize(kept);
-    trim_overlapping_windows();
+    if(!is_dgg())
+      trim_overlapping_windows();
 
     // "one angle, two sides": the window that reaches c best splits the face along its ray to c;
     // another window that also lights c but lies entirely on one side of that ray keeps only its
@@ -340,6 +370,26 @@ private:
     }
     return w.b0 < w.b1;
   }
+
+  // a window that meets a vertex takes it as CH-relay vertex on that side; its bound is
+  // recomputed and only ever tightens
+  void update_relay(Win& w, FT& relay, FT distance) const
+  {
+    if(!is_dgg())
+      return;
+    relay = distance;
+    w.d_max = (std::min)(w.d_max, distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right,
+                                                 m_bound_epsilon));
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // accuracy control: how the user's epsilon becomes the bound's epsilon and the fan's width
+  // (calibrated so that every vertex stays within epsilon, see doc/)
+
+  static FT bound_epsilon(FT accuracy) { return FT(0.25) * accuracy; }
+  static FT fan_half_width(FT accuracy) { using std::sqrt; return FT(3) * sqrt(bound_epsilon(accuracy)); }
+  bool is_dgg() const { return m_bound_epsilon > FT(0); }
+  static FT pi() { return FT(3.14159265358979323846); }
 
   // ---------------------------------------------------------------------------------------------
   // pairwise trimming (as in MMP and VTP): where two windows of one list overlap, the part of one
@@ -493,6 +543,8 @@ private:
     child.b0 = u0 * len;
     child.b1 = u1 * len;
     child.source = to_neighbour_frame(w.source, a, c, len);
+    if(x < w.b1) // line 22: the child's b1 ray grazes c, its new CH-relay vertex
+      update_relay(child, child.relay_right, length(c - w.source));
     add_window(left, child);
   }
 
@@ -510,12 +562,16 @@ private:
     child.b0 = v0 * len;
     child.b1 = v1 * len;
     child.source = to_neighbour_frame(w.source, c, b - c, len);
+    if(w.b0 < x) // line 22: the child's b0 ray grazes c
+      update_relay(child, child.relay_left, length(c - w.source));
     add_window(right, child);
   }
 
   // ---------------------------------------------------------------------------------------------
 
   const Mesh& m_mesh;
+  const FT m_bound_epsilon;           // epsilon of the distance bound (0: exact, no bound)
+  const FT m_fan_half_width;          // radians added on both sides of a pseudo-source's fan
   // polar angles at a vertex (see Unfolded_mesh::corner_start_angle) of the directions back along
   // the shortest paths found so far; a range when several paths tie
   struct Incoming
