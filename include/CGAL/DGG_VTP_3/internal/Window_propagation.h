@@ -424,31 +424,44 @@ private:
     const FT hi = (std::min)(u.b1, w.b1);
     if(!(lo < hi))
       return;
-    FT cuts[4];
-    int n = 0;
-    cuts[n++] = lo;
-    n += equal_distance_points(u, w, lo, hi, cuts + n);
-    cuts[n++] = hi;
-    std::sort(cuts + 1, cuts + n - 1);
+    const FT du_lo = u.distance_to_base_point(lo);
+    const FT du_hi = u.distance_to_base_point(hi);
+    const FT m = margin((std::max)(du_lo, du_hi));
+    const auto difference = [&](FT x) { return u.distance_to_base_point(x) - w.distance_to_base_point(x); };
+    const FT f_lo = du_lo - w.distance_to_base_point(lo);
+    const FT f_hi = du_hi - w.distance_to_base_point(hi);
 
-    // per piece, the sign of D_u - D_w: +1 u is farther, -1 w is farther or they tie, 0 unknown;
-    // the difference, in units of the rounding margin, at the cuts and at the pieces' middles
-    FT at_cut[4];
-    const auto difference = [&](FT x) {
-      const FT du = u.distance_to_base_point(x);
-      return (du - w.distance_to_base_point(x)) / margin(du);
-    };
-    for(int k = 0; k < n; ++k)
-      at_cut[k] = difference(cuts[k]);
+    // per piece, the sign of D_u - D_w: +1 u is farther, -1 w is farther or they tie, 0 unknown
+    FT cuts[4] = {lo, hi, hi, hi};
     int sign[3];
-    for(int k = 0; k + 1 < n; ++k)
+    int pieces = 1;
+    // D_u - D_w is 2-Lipschitz along the edge: ends far enough from 0 settle the whole overlap
+    const FT mean = (f_lo + f_hi) / FT(2);
+    if(mean - (hi - lo) > m)
+      sign[0] = 1;
+    else if(mean + (hi - lo) < -m)
+      sign[0] = -1;
+    else
     {
-      const FT at_middle = difference((cuts[k] + cuts[k + 1]) / FT(2));
-      const FT fmin = (std::min)(at_middle, (std::min)(at_cut[k], at_cut[k + 1]));
-      const FT fmax = (std::max)(at_middle, (std::max)(at_cut[k], at_cut[k + 1]));
-      sign[k] = fmin > FT(1) ? 1 : (fmax < FT(1) && fmin > -FT(1)) || fmax < -FT(1) ? -1 : 0;
+      int n = 1;
+      n += equal_distance_points(u, w, lo, hi, cuts + n);
+      cuts[n++] = hi;
+      if(n == 4 && cuts[2] < cuts[1])
+        std::swap(cuts[1], cuts[2]);
+      FT at_cut[4];
+      at_cut[0] = f_lo;
+      at_cut[n - 1] = f_hi;
+      for(int k = 1; k + 1 < n; ++k)
+        at_cut[k] = difference(cuts[k]);
+      pieces = n - 1;
+      for(int k = 0; k < pieces; ++k)
+      {
+        const FT at_middle = difference((cuts[k] + cuts[k + 1]) / FT(2));
+        const FT fmin = (std::min)(at_middle, (std::min)(at_cut[k], at_cut[k + 1]));
+        const FT fmax = (std::max)(at_middle, (std::max)(at_cut[k], at_cut[k + 1]));
+        sign[k] = fmin > m ? 1 : (fmax < m && fmin > -m) || fmax < -m ? -1 : 0;
+      }
     }
-    const int pieces = n - 1;
     int opposite_sign[3];
     for(int k = 0; k < pieces; ++k)
       opposite_sign[k] = -sign[k];
