@@ -6,7 +6,8 @@ The geometric traits of `CGAL::DGG_VTP_3::Geodesic_distance_solver`. It is delib
 the propagation reads each point's Cartesian coordinates once, in the constructor, and does all
 its geometry (edge lengths, unfolding of triangles onto the plane) in `FT` with internal structs.
 The test suite compiles an archetype with exactly these members, so this page cannot drift from
-what the code needs.
+what the code needs. The traits must be default constructible when the named parameter
+`geom_traits` is not given.
 
 \cgalHasModel All models of `Kernel` (e.g. `CGAL::Exact_predicates_inexact_constructions_kernel`,
 `CGAL::Simple_cartesian<float>`).
@@ -18,9 +19,8 @@ public:
   /// `sqrt`, `atan2`, `fmod` (found by argument-dependent lookup or in `std`) and `std::numeric_limits`
   /// with infinity and epsilon.
   typedef unspecified_type FT;
-  /// The point type of the mesh's vertex point map.
-  typedef unspecified_type Point_3;
-  /// Function objects `FT operator()(const Point_3&) const` returning a Cartesian coordinate.
+  /// Function objects returning a Cartesian coordinate of the value type of the vertex point map
+  /// (`FT operator()(const Point&) const`).
   typedef unspecified_type Compute_x_3;
   typedef unspecified_type Compute_y_3;
   typedef unspecified_type Compute_z_3;

@@ -102,16 +102,39 @@ public:
                                            VertexDistanceMap distances,
                                            const NamedParameters& np = parameters::default_values()) const
   {
+    return compute_distances_to_nearest_source(std::vector<vertex_descriptor>(1, source_vertex), distances, np);
+  }
+
+  /*!
+   * the same with several sources: the distance of each vertex to the nearest of them.
+   *
+   * \tparam VertexRange a range of `vertex_descriptor`
+   * \throws std::invalid_argument if `sources` is empty or has an element that is not a vertex of
+   *         the mesh, or if the accuracy is negative or not finite.
+   */
+  template <class VertexRange, class VertexDistanceMap,
+            class NamedParameters = parameters::Default_named_parameters>
+  Propagation_statistics compute_distances_to_nearest_source(const VertexRange& sources,
+                                                             VertexDistanceMap distances,
+                                                             const NamedParameters& np = parameters::default_values()) const
+  {
     const double accuracy = parameters::choose_parameter(parameters::get_parameter(np, internal_np::accuracy), 0.);
     if(!(accuracy >= 0.) || !std::isfinite(accuracy))
       throw std::invalid_argument("the accuracy must be a finite number >= 0");
 
-    const std::size_t s = static_cast<std::size_t>(get(m_vim, source_vertex));
-    if(s >= m_vertices.size() || m_vertices[s] != source_vertex)
-      throw std::invalid_argument("the source is not a vertex of the mesh");
+    std::vector<typename internal::Unfolded_mesh<FT>::Index> indices;
+    for(vertex_descriptor v : sources)
+    {
+      const std::size_t i = static_cast<std::size_t>(get(m_vim, v));
+      if(i >= m_vertices.size() || m_vertices[i] != v)
+        throw std::invalid_argument("the source is not a vertex of the mesh");
+      indices.push_back(static_cast<typename internal::Unfolded_mesh<FT>::Index>(i));
+    }
+    if(indices.empty())
+      throw std::invalid_argument("no source given");
 
     internal::Window_propagation<FT> propagation(m_mesh, FT(accuracy));
-    propagation.run(static_cast<typename internal::Unfolded_mesh<FT>::Index>(s));
+    propagation.run(indices);
     const std::vector<FT>& d = propagation.distances();
     for(std::size_t i = 0; i < m_vertices.size(); ++i)
       put(distances, m_vertices[i], d[i]);

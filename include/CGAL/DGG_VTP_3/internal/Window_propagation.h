@@ -59,10 +59,16 @@ public:
 
   static FT infinity() { return std::numeric_limits<FT>::infinity(); }
 
-  void run(Index source_vertex)
+  // the distance to the nearest of the sources: they all start at 0 and emit all around
+  void run(const std::vector<Index>& sources)
   {
-    m_distance[source_vertex] = FT(0);
-    m_queue.push(Queue_entry(FT(0), source_vertex));
+    std::vector<char> is_source(m_distance.size(), 0);
+    for(Index s : sources)
+    {
+      is_source[s] = 1;
+      m_distance[s] = FT(0);
+      m_queue.push(Queue_entry(FT(0), s));
+    }
     for(;;)
     {
       // lines 9-29
@@ -74,7 +80,7 @@ public:
         if(top.first > m_distance[v])
           continue; // superseded by a later, shorter distance
         ++m_stats.vertices_popped;
-        if(v == source_vertex || m_mesh.is_singular(v))
+        if(is_source[v] || m_mesh.is_singular(v))
           emit_pseudo_source_windows(v, m_mesh.corners_begin(v), m_mesh.corners_end(v));
         else if(is_dgg())
           emit_pseudo_source_windows_in_fan(v);

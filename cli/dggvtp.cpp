@@ -1,0 +1,378 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+// dggvtp: geodesic distances from one vertex of a mesh file to all its vertices, exact (VTP) or
+// accuracy-controlled (DGG-VTP). The command-line contract is documented in README.md and in
+// `dggvtp --help`; scripts depend on it.
+
+#include <dggvtp/load_mesh.h>
+
+#include <CGAL/DGG_VTP_3.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <limits>
+#include <new>
+#include <string>
+#include <vector>
+
+namespace {
+
+const char* const usage_text = R"(usage: dggvtp MESH [options]
+
+Geodesic distances on the surface of a triangle mesh, from one vertex to every vertex.
+
+  MESH                   a mesh file CGAL reads: OFF, OBJ, PLY, STL
+  --source N             0-based index of the source vertex in the file's order (default 0)
+  --exact                exact distances (VTP algorithm); the default
+  --epsilon E            DGG-VTP with accuracy E >= 0: every distance within a relative error E
+                         of the exact one (E = 0 is --exact)
+  --precision P          double (default) or float
+  --threads T            number of threads, 0 = all cores (default 1; the propagation is
+                         sequential for now, T is recorded in the statistics)
+  --output FILE          one line per vertex of the file, in the file's order: the distance
+                         printed with %.17g, or inf if no path on the surface reaches it;
+                         '-' writes to standard output
+  --stats FILE           one JSON object: sizes, times, window counts, peak memory
+  --quiet                no summary, no warnings
+  --help                 this text
+
+Input policy: polygons are triangulated, inconsistent orientations are fixed and non-manifold
+vertices are split (a warning on stderr says so); distances are still reported per vertex of the
+file, the smallest over the copies of a split vertex. Vertices no face uses, and vertices of other
+connected components than the source's, are unreachable: inf. An unreadable or empty file, a
+non-finite coordinate, a face with fewer than 3 or repeated vertices, a degenerate face (zero
+length edge or zero area) or an out-of-range source is an error: one line on stderr starting with
+'error:', exit status 2, and no output file. Bad usage: exit status 1.
+)";
+
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct Options
+{
+  std::string mesh;
+  std::size_t source = 0;
+  double epsilon = 0.;
+  std::string precision = "double";
+  long threads = 1;
+  std::string output;
+  std::string stats;
+  bool quiet = false;
+};
+
+template <class T>
+T parse_number(const std::string& option, const std::string& text)
+{
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  T value{};
+  if(std::is_floating_point<T>::value)
+    value = T(std::strtod(begin, &end));
+  else if(!text.empty() && text[0] != '-')
+    value = T(std::strtoull(begin, &end, 10));
+  if(end == begin || end == nullptr || *end != '\0' || errno == ERANGE)
+    throw Usage_error("invalid value '" + text + "' for " + option);
+  return value;
+}
+
+Options parse_options(int argc, char** argv)
+{
+  Options options;
+  bool exact = false, epsilon = false;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const auto value = [&]() -> std::string {
+      if(i + 1 >= argc)
+        throw Usage_error(arg + " needs a value");
+      return argv[++i];
+    };
+    if(arg == "--help" || arg == "-h")
+    {
+      std::cout << usage_text;
+      std::exit(0);
+    }
+    else if(arg == "--source")
+      options.source = parse_number<std::size_t>(arg, value());
+    else if(arg == "--exact")
+      exact = true;
+    else if(arg == "--epsilon")
+    {
+      options.epsilon = parse_number<double>(arg, value());
+      if(!(options.epsilon >= 0.) || !std::isfinite(options.epsilon))
+        throw Usage_error("--epsilon must be a finite number >= 0");
+      epsilon = true;
+    }
+    else if(arg == "--precision")
+    {
+      options.precision = value();
+      if(options.precision != "double" && options.precision != "float")
+        throw Usage_error("--precision must be double or float");
+    }
+    else if(arg == "--threads")
+      options.threads = long(parse_number<std::size_t>(arg, value()));
+    else if(arg == "--output")
+      options.output = value();
+    else if(arg == "--stats")
+      options.stats = value();
+    else if(arg == "--quiet")
+      options.quiet = true;
+    else if(arg.size() > 1 && arg[0] == '-')
+      throw Usage_error("unknown option " + arg);
+    else if(options.mesh.empty())
+      options.mesh = arg;
+    else
+      throw Usage_error("more than one MESH given ('" + options.mesh + "' and '" + arg + "')");
+  }
+  if(options.mesh.empty())
+    throw Usage_error("no MESH given");
+  if(exact && epsilon && options.epsilon > 0.)
+    throw Usage_error("--exact and --epsilon E > 0 contradict each other");
+  return options;
+}
+
+// Writes through a temporary file next to `path`, renamed over it only once complete, so that an
+// error never leaves a partial file; "-" is standard output.
+class Output_file
+{
+public:
+  explicit Output_file(const std::string& path) : m_path(path)
+  {
+    if(path == "-")
+    {
+      m_file = stdout;
+      return;
+    }
+    m_temporary = path + ".tmp-XXXXXX";
+    const int fd = mkstemp(&m_temporary[0]);
+    if(fd < 0 || !(m_file = fdopen(fd, "w")))
+      throw dggvtp::Input_error("cannot write '" + path + "': " + std::strerror(errno));
+  }
+  ~Output_file()
+  {
+    if(m_file && m_file != stdout)
+    {
+      std::fclose(m_file);
+      std::remove(m_temporary.c_str());
+    }
+  }
+  FILE* get() const { return m_file; }
+  void commit()
+  {
+    if(m_file == stdout)
+    {
+      if(std::fflush(stdout) != 0)
+        throw dggvtp::Input_error("cannot write to standard output");
+      return;
+    }
+    const bool written = std::fflush(m_file) == 0 && !std::ferror(m_file);
+    const bool closed = std::fclose(m_file) == 0;
+    m_file = nullptr;
+    if(!written || !closed || std::rename(m_temporary.c_str(), m_path.c_str()) != 0)
+    {
+      std::remove(m_temporary.c_str());
+      throw dggvtp::Input_error("cannot write '" + m_path + "'");
+    }
+  }
+
+private:
+  std::string m_path;
+  std::string m_temporary;
+  FILE* m_file = nullptr;
+};
+
+struct Run
+{
+  std::size_t faces = 0;
+  double seconds_prepare = 0., seconds_propagate = 0.;
+  CGAL::DGG_VTP_3::Propagation_statistics statistics;
+  std::vector<double> distances; // per file vertex
+};
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+template <class Kernel>
+Run compute(dggvtp::Loaded_soup& soup, const Options& options)
+{
+  using Mesh = CGAL::Surface_mesh<typename Kernel::Point_3>;
+  const Mesh mesh = dggvtp::make_triangle_mesh<Kernel>(soup);
+  Run run;
+  run.faces = num_faces(mesh);
+  const Clock::time_point t0 = Clock::now();
+  CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
+  run.seconds_prepare = seconds_since(t0);
+
+  std::vector<typename Kernel::FT> d(num_vertices(mesh));
+  const Clock::time_point t1 = Clock::now();
+  // a vertex that loading split is the source on every sheet
+  std::vector<typename Mesh::Vertex_index> sources;
+  for(std::size_t i = 0; i < soup.file_vertex_of.size(); ++i)
+    if(soup.file_vertex_of[i] == options.source)
+      sources.push_back(typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(i)));
+  run.statistics = solver.compute_distances_to_nearest_source(sources, CGAL::make_property_map(d),
+                                                              CGAL::parameters::accuracy(options.epsilon));
+  run.seconds_propagate = seconds_since(t1);
+
+  // per file vertex: the smallest distance over the vertex and the copies loading made of it
+  run.distances.assign(soup.file_vertices, std::numeric_limits<double>::infinity());
+  for(std::size_t i = 0; i < d.size(); ++i)
+  {
+    double& out = run.distances[soup.file_vertex_of[i]];
+    out = (std::min)(out, double(d[i]));
+  }
+  return run;
+}
+
+double peak_rss_mb()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.;
+}
+
+void write_distances(const std::vector<double>& distances, const std::string& path)
+{
+  Output_file file(path);
+  for(double d : distances)
+    if(std::isinf(d))
+      std::fputs("inf\n", file.get());
+    else
+      std::fprintf(file.get(), "%.17g\n", d);
+  file.commit();
+}
+
+std::string json_string(const std::string& s)
+{
+  std::string out = "\"";
+  for(char c : s)
+  {
+    if(c == '"' || c == '\\')
+      out += '\\';
+    if(static_cast<unsigned char>(c) < 0x20)
+    {
+      char buffer[8];
+      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+      out += buffer;
+    }
+    else
+      out += c;
+  }
+  return out + "\"";
+}
+
+int run_main(int argc, char** argv)
+{
+  Options options;
+  try
+  {
+    options = parse_options(argc, argv);
+  }
+  catch(const Usage_error& e)
+  {
+    std::cerr << "error: " << e.what() << " (see dggvtp --help)\n";
+    return 1;
+  }
+
+  const Clock::time_point t0 = Clock::now();
+  dggvtp::Loaded_soup soup = dggvtp::load_soup(options.mesh);
+  if(options.source >= soup.file_vertices)
+    throw dggvtp::Input_error("source " + std::to_string(options.source) + " is out of range (the mesh has " +
+                              std::to_string(soup.file_vertices) + " vertices)");
+  const double seconds_load = seconds_since(t0);
+
+  Run run;
+  try
+  {
+    run = options.precision == "float" ? compute<CGAL::Simple_cartesian<float>>(soup, options)
+                                       : compute<CGAL::Exact_predicates_inexact_constructions_kernel>(soup, options);
+  }
+  catch(const std::invalid_argument& e) // the library's documented preconditions
+  {
+    throw dggvtp::Input_error(e.what());
+  }
+  if(!options.quiet)
+    for(const std::string& repair : soup.repairs)
+      std::cerr << "warning: " << options.mesh << ": " << repair << "\n";
+
+  if(!options.output.empty())
+    write_distances(run.distances, options.output);
+
+  double farthest = 0.;
+  for(double d : run.distances)
+    if(std::isfinite(d))
+      farthest = (std::max)(farthest, d);
+  const double rss = peak_rss_mb();
+  const auto& s = run.statistics;
+  if(!options.stats.empty())
+  {
+    Output_file file(options.stats);
+    std::fprintf(file.get(),
+                 "{\"mesh\": %s, \"vertices\": %zu, \"faces\": %zu, \"source\": %zu, \"epsilon\": %.17g, "
+                 "\"precision\": \"%s\", \"threads\": %ld, \"seconds_load\": %.6f, \"seconds_prepare\": %.6f, "
+                 "\"seconds_propagate\": %.6f, \"windows_created\": %zu, \"windows_peak\": %zu, "
+                 "\"pseudo_sources\": %zu, \"vertices_popped\": %zu, \"vertices_reached\": %zu, "
+                 "\"max_distance\": %.17g, \"peak_rss_mb\": %.1f}\n",
+                 json_string(options.mesh).c_str(), soup.file_vertices, run.faces, options.source, options.epsilon,
+                 options.precision.c_str(), options.threads, seconds_load, run.seconds_prepare,
+                 run.seconds_propagate, s.windows_created, s.windows_peak, s.pseudo_sources, s.vertices_popped,
+                 s.vertices_reached, farthest, rss);
+    file.commit();
+  }
+  if(!options.quiet)
+  {
+    std::ostream& out = options.output == "-" ? std::cerr : std::cout;
+    std::size_t reached = 0;
+    for(double d : run.distances)
+      reached += std::isfinite(d) ? 1 : 0;
+    out << "dggvtp: " << options.mesh << ": " << soup.file_vertices << " vertices, " << run.faces << " faces\n"
+        << "  source " << options.source << ", "
+        << (options.epsilon > 0. ? "DGG-VTP epsilon " + std::to_string(options.epsilon) : std::string("exact (VTP)"))
+        << ", " << options.precision << "\n"
+        << "  load " << seconds_load << " s, prepare " << run.seconds_prepare << " s, propagate "
+        << run.seconds_propagate << " s\n"
+        << "  windows created " << s.windows_created << ", peak " << s.windows_peak << ", pseudo-sources "
+        << s.pseudo_sources << "\n"
+        << "  reached " << reached << " of " << soup.file_vertices << " vertices, farthest at " << farthest << "\n"
+        << "  peak memory " << rss << " MB\n";
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    return run_main(argc, argv);
+  }
+  catch(const dggvtp::Input_error& e)
+  {
+    std::cerr << "error: " << e.what() << "\n";
+  }
+  catch(const std::bad_alloc&)
+  {
+    std::cerr << "error: out of memory\n";
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "error: " << e.what() << "\n";
+  }
+  return 2;
+}
