@@ -37,15 +37,16 @@ public:
     if(m_free != nil)
     {
       i = m_free;
-      m_free = m_pool[i].next;
+      m_free = m_next[i];
       m_pool[i] = w;
     }
     else
     {
       i = Index(m_pool.size());
       m_pool.push_back(w);
+      m_next.push_back(nil);
     }
-    m_pool[i].next = m_head[h];
+    m_next[i] = m_head[h];
     m_head[h] = i;
     ++m_created;
     if(++m_live > m_peak)
@@ -61,8 +62,8 @@ public:
     while(i != nil)
     {
       out.push_back(m_pool[i]);
-      const Index n = m_pool[i].next;
-      m_pool[i].next = m_free;
+      const Index n = m_next[i];
+      m_next[i] = m_free;
       m_free = i;
       --m_live;
       i = n;
@@ -75,6 +76,7 @@ public:
 private:
   std::vector<Index> m_head;      // per halfedge: first window of its list, or nil
   std::vector<Window<FT>> m_pool; // windows, live or free
+  std::vector<Index> m_next;      // per pool slot: next window of its list, or next free slot
   Index m_free = nil;             // first free slot of the pool
   std::size_t m_live = 0;         // windows currently stored in lists
   std::size_t m_peak = 0;         // maximum of m_live

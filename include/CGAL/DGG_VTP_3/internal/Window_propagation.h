@@ -308,9 +308,11 @@ private:
     FT best_distance = infinity();
     FT best_crossing = FT(0);
     const Win* best = nullptr;
-    for(const Win& w : m_buffer)
+    m_crossings.resize(m_buffer.size());
+    for(std::size_t i = 0; i < m_buffer.size(); ++i)
     {
-      const FT x = x_axis_crossing(w.source, c);
+      const Win& w = m_buffer[i];
+      const FT x = m_crossings[i] = x_axis_crossing(w.source, c);
       if(w.b0 <= x && x <= w.b1)
       {
         const FT d = w.distance_to(c);
@@ -334,9 +336,10 @@ private:
 
     const Index left = m_mesh.opposite(Mesh::prev(h));
     const Index right = m_mesh.opposite(Mesh::next(h));
-    for(const Win& w : m_buffer)
+    for(std::size_t i = 0; i < m_buffer.size(); ++i)
     {
-      const FT x = x_axis_crossing(w.source, c);
+      const Win& w = m_buffer[i];
+      const FT x = m_crossings[i];
       const bool lights_apex = w.b0 <= x && x <= w.b1;
       if(left != Mesh::no_halfedge && w.b0 < x && !(lights_apex && w.b0 >= best_crossing))
         add_left_child(h, w, x, left);
@@ -441,11 +444,23 @@ private:
     FT cuts[4] = {lo, hi, hi, hi};
     int sign[3];
     int pieces = 1;
-    // D_u - D_w is 2-Lipschitz along the edge: ends far enough from 0 settle the whole overlap
-    const FT mean = (f_lo + f_hi) / FT(2);
-    if(mean - (hi - lo) > m)
+    // The slope of D_u - D_w is cos_u - cos_w, the cosines of the rays with the edge, each
+    // increasing along it: slopes in [a, b] bound the difference on the overlap from both sides
+    // by lines through its ends, and when those bounds keep one sign, no root search is needed.
+    // (the cosines come from distances minus sigma, so they are widened by sqrt(eps) for the
+    // cancellation that this may cost)
+    using std::sqrt;
+    const FT slack = sqrt(std::numeric_limits<FT>::epsilon());
+    const FT a = (lo - u.source.x) / (du_lo - u.sigma) - (hi - w.source.x) / (du_hi - f_hi - w.sigma) - slack;
+    const FT b = (hi - u.source.x) / (du_hi - u.sigma) - (lo - w.source.x) / (du_lo - f_lo - w.sigma) + slack;
+    const FT len = hi - lo;
+    const FT lowest = (a >= FT(0)) ? f_lo : (b <= FT(0)) ? f_hi
+                    : f_lo + a * (f_hi - f_lo - b * len) / (a - b);
+    const FT highest = (a >= FT(0)) ? f_hi : (b <= FT(0)) ? f_lo
+                     : f_lo + b * (f_hi - f_lo - a * len) / (b - a);
+    if(lowest > m)
       sign[0] = 1;
-    else if(mean + (hi - lo) < -m)
+    else if(highest < -m)
       sign[0] = -1;
     else
     {
@@ -608,6 +623,7 @@ private:
   std::deque<Index> m_fifo;           // FIFO F of window lists to propagate
   std::vector<Win> m_buffer;          // the window list being propagated
   std::vector<FT> m_starts;           // its windows' starts, sorted, before pairwise trimming
+  std::vector<FT> m_crossings;        // where each of its windows' ray to the apex crosses the edge
   Propagation_statistics m_stats;
 };
 
