@@ -48,9 +48,10 @@ Geodesic distances on the surface of a triangle mesh, from one vertex to every v
   --quiet                no summary, no warnings
   --help                 this text
 
-Input policy: polygons are triangulated, inconsistent orientations are fixed and non-manifold
-vertices are split (a warning on stderr says so); distances are still reported per vertex of the
-file, the smallest over the copies of a split vertex. Vertices no face uses, and vertices of other
+Input policy: polygons are triangulated and inconsistent orientations are fixed, splitting
+vertices where needed; a vertex where separate fans of faces meet is kept, and paths may pass
+through it (a warning on stderr reports each of these); distances are still reported per vertex
+of the file, the smallest over the copies of a split vertex. Vertices no face uses, and vertices of other
 connected components than the source's, are unreachable: inf. An unreadable or empty file, a
 non-finite coordinate, a face with fewer than 3 or repeated vertices, a degenerate face (zero
 length edge or zero area) or an out-of-range source is an error: one line on stderr starting with

@@ -90,9 +90,9 @@ case $case in
     run "$data/quad.off" --output "$work/d.txt"; expect_rc 0
     [[ "$err" == warning:*triangulated* ]] || fail "no warning about the triangulation: $err"
     expect_lines "$work/d.txt" 0 1 1.4142135623730951 1 ;;
-  non_manifold_vertex_is_split)
+  non_manifold_vertex_is_kept)
     run "$data/non_manifold_vertex.off" --output "$work/d.txt"; expect_rc 0
-    [[ "$err" == warning:*non-manifold* ]] || fail "no warning about the split: $err"
+    [[ "$err" == warning:*non-manifold* ]] || fail "no warning about the non-manifold vertex: $err"
     expect_lines "$work/d.txt" 0 1 1 1 1 ;;
   inconsistent_orientation_is_fixed)
     run "$data/inconsistent_orientation.off" --quiet --output "$work/d.txt"; expect_rc 0

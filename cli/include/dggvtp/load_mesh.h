@@ -8,6 +8,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
@@ -15,6 +16,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -92,6 +95,12 @@ inline Loaded_soup load_soup(const std::string& path)
   soup.file_vertex_of.resize(soup.points.size());
   for(std::size_t i = 0; i < soup.points.size(); ++i)
     soup.file_vertex_of[i] = i;
+  return soup;
+}
+
+// Orients the polygons consistently, splitting non-manifold vertices (appended copies).
+inline void orient_soup(Loaded_soup& soup)
+{
   std::size_t duplicated = 0, reversed = 0;
   internal::Repair_visitor visitor;
   visitor.duplicated = &duplicated;
@@ -103,14 +112,12 @@ inline Loaded_soup load_soup(const std::string& path)
     soup.repairs.push_back("split " + std::to_string(duplicated) + " non-manifold vertices");
   if(reversed > 0)
     soup.repairs.push_back("reoriented " + std::to_string(reversed) + " faces");
-  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.polygons))
-    throw Input_error("the faces of '" + path + "' do not form a valid surface, even after orienting them");
-  return soup;
 }
 
-// The soup as a triangle mesh with the point type of `Kernel`; mesh vertex i is soup point i.
+namespace internal {
+
 template <class Kernel>
-CGAL::Surface_mesh<typename Kernel::Point_3> make_triangle_mesh(Loaded_soup& soup)
+CGAL::Surface_mesh<typename Kernel::Point_3> soup_to_mesh(const Loaded_soup& soup)
 {
   using Point = typename Kernel::Point_3;
   std::vector<Point> points;
@@ -119,6 +126,40 @@ CGAL::Surface_mesh<typename Kernel::Point_3> make_triangle_mesh(Loaded_soup& sou
     points.emplace_back(typename Kernel::FT(p.x()), typename Kernel::FT(p.y()), typename Kernel::FT(p.z()));
   CGAL::Surface_mesh<Point> mesh;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, soup.polygons, mesh);
+  return mesh;
+}
+
+} // namespace internal
+
+// The soup as a triangle mesh with the point type of `Kernel`; mesh vertex i is soup point i.
+// Consumes the soup's points and polygons.
+template <class Kernel>
+CGAL::Surface_mesh<typename Kernel::Point_3> make_triangle_mesh(Loaded_soup& soup)
+{
+  // A face that does not fit (inconsistent orientation, more than two faces on an edge) is left
+  // out by the conversion; only then is the soup oriented, which on a clean million-face file
+  // would cost ten times the rest of loading.
+  auto mesh = internal::soup_to_mesh<Kernel>(soup);
+  if(num_faces(mesh) != soup.polygons.size())
+  {
+    orient_soup(soup);
+    mesh = internal::soup_to_mesh<Kernel>(soup);
+    if(num_faces(mesh) != soup.polygons.size())
+      throw Input_error("the faces do not form a surface, even after orienting them");
+  }
+  // a vertex where separate fans of faces meet is kept as it is (geodesics may go from one fan to
+  // the other through it); say so, since such input is often a defect
+  std::vector<typename boost::graph_traits<decltype(mesh)>::halfedge_descriptor> pinched;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(mesh, std::back_inserter(pinched));
+  std::set<std::size_t> pinched_vertices;
+  for(auto h : pinched)
+    pinched_vertices.insert(std::size_t(target(h, mesh)));
+  if(!pinched_vertices.empty())
+    soup.repairs.push_back("kept " + std::to_string(pinched_vertices.size()) +
+                           " non-manifold vertices, where separate fans of faces meet");
+  // the mesh holds everything now: give the soup's memory back before the propagation
+  std::vector<typename Loaded_soup::Point>().swap(soup.points);
+  std::vector<std::vector<std::size_t>>().swap(soup.polygons);
   if(!CGAL::is_triangle_mesh(mesh))
   {
     soup.repairs.push_back("triangulated the faces with more than 3 vertices");
