@@ -200,6 +200,7 @@ private:
 struct Run
 {
   std::size_t faces = 0;
+  double seconds_make_mesh = 0.; // soup to mesh, with repairs: part of loading
   double seconds_prepare = 0., seconds_propagate = 0.;
   CGAL::DGG_VTP_3::Propagation_statistics statistics;
   std::vector<double> distances; // per file vertex
@@ -212,8 +213,10 @@ template <class Kernel>
 Run compute(dggvtp::Loaded_soup& soup, const Options& options)
 {
   using Mesh = CGAL::Surface_mesh<typename Kernel::Point_3>;
-  const Mesh mesh = dggvtp::make_triangle_mesh<Kernel>(soup);
   Run run;
+  const Clock::time_point start = Clock::now();
+  const Mesh mesh = dggvtp::make_triangle_mesh<Kernel>(soup);
+  run.seconds_make_mesh = seconds_since(start);
   run.faces = num_faces(mesh);
   const Clock::time_point t0 = Clock::now();
   CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
@@ -295,7 +298,7 @@ int run_main(int argc, char** argv)
   if(options.source >= soup.file_vertices)
     throw dggvtp::Input_error("source " + std::to_string(options.source) + " is out of range (the mesh has " +
                               std::to_string(soup.file_vertices) + " vertices)");
-  const double seconds_load = seconds_since(t0);
+  const double seconds_read = seconds_since(t0);
 
   Run run;
   try
@@ -307,6 +310,7 @@ int run_main(int argc, char** argv)
   {
     throw dggvtp::Input_error(e.what());
   }
+  const double seconds_load = seconds_read + run.seconds_make_mesh;
   if(!options.quiet)
     for(const std::string& repair : soup.repairs)
       std::cerr << "warning: " << options.mesh << ": " << repair << "\n";
