@@ -13,8 +13,11 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/types.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -127,10 +130,12 @@ Options parse_options(int argc, char** argv)
     }
     else if(arg == "--threads")
       options.threads = long(parse_number<std::size_t>(arg, value()));
-    else if(arg == "--output")
-      options.output = value();
-    else if(arg == "--stats")
-      options.stats = value();
+    else if(arg == "--output" || arg == "--stats")
+    {
+      (arg == "--output" ? options.output : options.stats) = value();
+      if((arg == "--output" ? options.output : options.stats).empty())
+        throw Usage_error(arg + " needs a file name ('-' for standard output)");
+    }
     else if(arg == "--quiet")
       options.quiet = true;
     else if(arg.size() > 1 && arg[0] == '-')
@@ -147,8 +152,10 @@ Options parse_options(int argc, char** argv)
   return options;
 }
 
-// Writes through a temporary file next to `path`, renamed over it only once complete, so that an
-// error never leaves a partial file; "-" is standard output.
+// Writes a regular file through a temporary file next to `path`, renamed over it only once
+// complete, so that an error never leaves a partial file. A path that exists and is not a regular
+// file (/dev/null, a pipe, a terminal) is written in place: renaming over it would replace the
+// device or pipe with a file. "-" is standard output.
 class Output_file
 {
 public:
@@ -159,17 +166,42 @@ public:
       m_file = stdout;
       return;
     }
+    struct stat existing;
+    const bool exists = ::stat(path.c_str(), &existing) == 0;
+    if(exists && !S_ISREG(existing.st_mode))
+    {
+      if(S_ISDIR(existing.st_mode))
+        throw dggvtp::Input_error("cannot write '" + path + "': it is a directory");
+      if(!(m_file = std::fopen(path.c_str(), "w")))
+        throw dggvtp::Input_error("cannot write '" + path + "': " + std::strerror(errno));
+      return;
+    }
     m_temporary = path + ".tmp-XXXXXX";
     const int fd = mkstemp(&m_temporary[0]);
-    if(fd < 0 || !(m_file = fdopen(fd, "w")))
+    if(fd < 0)
       throw dggvtp::Input_error("cannot write '" + path + "': " + std::strerror(errno));
+    // mkstemp creates the file private (0600); give it the mode the file it replaces had, or the
+    // mode a plain new file would get
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, exists ? (existing.st_mode & 07777) : (0666 & ~mask));
+    if(!(m_file = fdopen(fd, "w")))
+    {
+      const int error = errno;
+      ::close(fd);
+      std::remove(m_temporary.c_str());
+      throw dggvtp::Input_error("cannot write '" + path + "': " + std::strerror(error));
+    }
   }
+  Output_file(const Output_file&) = delete;
+  Output_file& operator=(const Output_file&) = delete;
   ~Output_file()
   {
     if(m_file && m_file != stdout)
     {
       std::fclose(m_file);
-      std::remove(m_temporary.c_str());
+      if(!m_temporary.empty())
+        std::remove(m_temporary.c_str());
     }
   }
   FILE* get() const { return m_file; }
@@ -184,6 +216,12 @@ public:
     const bool written = std::fflush(m_file) == 0 && !std::ferror(m_file);
     const bool closed = std::fclose(m_file) == 0;
     m_file = nullptr;
+    if(m_temporary.empty())
+    {
+      if(!written || !closed)
+        throw dggvtp::Input_error("cannot write '" + m_path + "'");
+      return;
+    }
     if(!written || !closed || std::rename(m_temporary.c_str(), m_path.c_str()) != 0)
     {
       std::remove(m_temporary.c_str());
@@ -193,7 +231,7 @@ public:
 
 private:
   std::string m_path;
-  std::string m_temporary;
+  std::string m_temporary; // empty when writing in place
   FILE* m_file = nullptr;
 };
 

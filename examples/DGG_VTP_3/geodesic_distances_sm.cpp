@@ -1,38 +1,59 @@
 // Copyright (c) 2026 The DGG-VTP for CGAL authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Exact geodesic distances from one vertex of a Surface_mesh, with the one-shot function.
+// Author(s): DGG-VTP for CGAL team
+//
+// Exact geodesic distances from one vertex of a Surface_mesh to all its vertices, with the
+// one-shot free function and a property map of the mesh.
 
 #include <CGAL/DGG_VTP_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <iostream>
+#include <string>
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
-using vertex_descriptor = Mesh::Vertex_index;
+using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
 
 int main(int argc, char** argv)
 {
-  const std::string file = argc > 1 ? argv[1] : CGAL::data_file_path("meshes/elephant.off");
-  Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(file, mesh) || !CGAL::is_triangle_mesh(mesh))
-  {
-    std::cerr << "cannot read a triangle mesh from " << file << "\n";
-    return 1;
-  }
-  auto distance = mesh.add_property_map<vertex_descriptor, double>("v:distance", 0.).first;
-  const vertex_descriptor source = *vertices(mesh).begin();
+  const std::string filename = (argc > 1) ? argv[1] : CGAL::data_file_path("meshes/elephant.off");
 
-  CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, source, distance);
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(filename, mesh) || !CGAL::is_triangle_mesh(mesh))
+  {
+    std::cerr << "Invalid input: " << filename << " is not a triangle mesh." << std::endl;
+    return EXIT_FAILURE;
+  }
+
+  // one distance per vertex, stored in the mesh; unreachable vertices get +infinity
+  Mesh::Property_map<vertex_descriptor, double> distance =
+    mesh.add_property_map<vertex_descriptor, double>("v:geodesic_distance", 0.).first;
+
+  const vertex_descriptor source = *(vertices(mesh).begin());
+  const CGAL::DGG_VTP_3::Propagation_statistics stats =
+    CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, source, distance);
+
+  std::cout << num_vertices(mesh) << " vertices, " << stats.windows_created << " windows" << std::endl;
+
+  // a few vertices: every num_vertices/4 vertex
+  const Mesh::size_type step = (std::max)(Mesh::size_type(1), Mesh::size_type(num_vertices(mesh) / 4));
+  for(Mesh::size_type i = 0; i < num_vertices(mesh); i += step)
+  {
+    const vertex_descriptor v(i);
+    std::cout << "distance from " << source << " to " << v << ": " << distance[v] << std::endl;
+  }
 
   vertex_descriptor farthest = source;
   for(vertex_descriptor v : vertices(mesh))
     if(distance[v] > distance[farthest])
       farthest = v;
-  std::cout << "geodesic distance from " << source << " to " << farthest << " (the farthest vertex): "
-            << distance[farthest] << "\n";
-  return distance[farthest] > 0. ? 0 : 1;
+  std::cout << "farthest vertex: " << farthest << " at distance " << distance[farthest] << std::endl;
+
+  return (distance[source] == 0. && distance[farthest] > 0.) ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -113,6 +113,10 @@ case $case in
     run "$spot" --source 99999 --output "$work/kept.txt"; expect_rc 2
     [ "$(cat "$work/kept.txt")" = keep ] || fail "the existing output file was touched"
     [ -z "$(ls "$work" | grep tmp-)" ] || fail "a temporary file was left behind" ;;
+  output_to_device)
+    run "$spot" --quiet --output /dev/null --stats /dev/null; expect_rc 0
+    [ -c /dev/null ] || fail "/dev/null was replaced by a file" ;;
+  empty_output_name) run "$spot" --output ""; expect_usage_error ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"

@@ -14,7 +14,9 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -65,8 +67,12 @@ struct Repair_visitor : CGAL::Polygon_mesh_processing::Default_orientation_visit
 inline Loaded_soup load_soup(const std::string& path)
 {
   Loaded_soup soup;
-  if(!std::ifstream(path).good())
-    throw Input_error("cannot open '" + path + "'");
+  {
+    errno = 0;
+    std::ifstream probe(path);
+    if(!probe.good())
+      throw Input_error("cannot read '" + path + "': " + (errno != 0 ? std::strerror(errno) : "cannot open it"));
+  }
   if(!CGAL::IO::read_polygon_soup(path, soup.points, soup.polygons, CGAL::parameters::verbose(false)))
     throw Input_error("cannot read '" + path + "' as a mesh (unsupported format, or an invalid or truncated file)");
   if(soup.points.empty())
