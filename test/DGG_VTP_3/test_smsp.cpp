@@ -88,7 +88,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(pinion, Config, All_configurations)
 }
 
 // open, one boundary loop; a source on the border too
-BOOST_AUTO_TEST_CASE_TEMPLATE(lion_head, Config, Double_configurations)
+BOOST_AUTO_TEST_CASE_TEMPLATE(lion_head, Config, All_configurations)
 {
   cross_check<Config>("lion_head.ply", true);
 }

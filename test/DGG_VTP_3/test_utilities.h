@@ -71,7 +71,6 @@ struct Ph_f // Polyhedron_3 without ids, float
 };
 
 using All_configurations = std::tuple<Sm_d, Sm_f, Ph_d, Ph_f>;
-using Double_configurations = std::tuple<Sm_d, Ph_d>;
 
 // absolute bound on the distance reported at the source itself
 constexpr double source_tolerance = 1e-12;

@@ -15,7 +15,8 @@ what the code needs. The traits must be default constructible when the named par
 class DGGVTPTraits_3
 {
 public:
-  /// The number type of the whole computation. `double` and `float` are supported; it must provide
+  /// The number type of the coordinates and of the results (the propagation runs in it, but at
+  /// least in `double`). `double` and `float` are supported; it must provide
   /// `sqrt`, `atan2`, `fmod` (found by argument-dependent lookup or in `std`) and `std::numeric_limits`
   /// with infinity and epsilon.
   typedef unspecified_type FT;

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -39,7 +40,10 @@ namespace DGG_VTP_3 {
  *
  * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, with triangle faces.
  * \tparam GeomTraits a model of `DGGVTPTraits_3`; by default the kernel of the mesh's points.
- *         Its `FT` is the number type of the whole computation (`double` and `float` are supported).
+ *         Its `FT` is the number type of the results (`double`, `float`, or an exact type with
+ *         square roots). The propagation runs in `FT`, but at least in `double`: in float,
+ *         windows that tie within rounding get trimmed in the wrong order, and the cones lost
+ *         that way left vertices unreachable (float is kept for input and output).
  * \tparam VertexIndexMap the type of the vertex index map given to the constructor, by default the
  *         one `CGAL::get_initialized_vertex_index_map()` returns for the mesh.
  */
@@ -54,6 +58,12 @@ public:
   using Vertex_index_map = typename Default::Get<VertexIndexMap,
                              typename GetInitializedVertexIndexMap<TriangleMesh>::const_type>::type;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+
+private:
+  using Computation_FT = typename std::conditional<std::is_same<FT, float>::value, double, FT>::type;
+  using Mesh = internal::Unfolded_mesh<Computation_FT>;
+
+public:
 
   /*!
    * prepares the mesh for distance queries.
@@ -122,22 +132,22 @@ public:
     if(!(accuracy >= 0.) || !std::isfinite(accuracy))
       throw std::invalid_argument("the accuracy must be a finite number >= 0");
 
-    std::vector<typename internal::Unfolded_mesh<FT>::Index> indices;
+    std::vector<typename Mesh::Index> indices;
     for(vertex_descriptor v : sources)
     {
       const std::size_t i = static_cast<std::size_t>(get(m_vim, v));
       if(i >= m_vertices.size() || m_vertices[i] != v)
         throw std::invalid_argument("the source is not a vertex of the mesh");
-      indices.push_back(static_cast<typename internal::Unfolded_mesh<FT>::Index>(i));
+      indices.push_back(static_cast<typename Mesh::Index>(i));
     }
     if(indices.empty())
       throw std::invalid_argument("no source given");
 
-    internal::Window_propagation<FT> propagation(m_mesh, FT(accuracy));
+    internal::Window_propagation<Computation_FT> propagation(m_mesh, Computation_FT(accuracy));
     propagation.run(indices);
-    const std::vector<FT>& d = propagation.distances();
+    const std::vector<Computation_FT>& d = propagation.distances();
     for(std::size_t i = 0; i < m_vertices.size(); ++i)
-      put(distances, m_vertices[i], d[i]);
+      put(distances, m_vertices[i], FT(d[i]));
     return propagation.statistics();
   }
 
@@ -145,7 +155,7 @@ public:
 
 private:
   Vertex_index_map m_vim;                    // user's vertex -> internal index
-  internal::Unfolded_mesh<FT> m_mesh;        // intrinsic geometry and combinatorics
+  Mesh m_mesh;                               // intrinsic geometry and combinatorics
   std::vector<vertex_descriptor> m_vertices; // internal index -> user's vertex
 };
 

@@ -160,30 +160,27 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
     }
   }
 
-  // Unfold each triangle onto each of its three edges, at least in double: in float, the height
-  // of a skinny triangle taken from a cross product keeps only about eps times its aspect ratio
-  // (1e-5 relative errors on 1:100 triangles), while the propagation itself is fine in float.
-  using UFT = typename std::conditional<std::is_same<FT, float>::value, double, FT>::type;
+  // unfold each triangle onto each of its three edges
   for(std::size_t fi = 0; fi < nf; ++fi)
   {
-    UFT p[3][3];
+    FT p[3][3];
     for(int k = 0; k < 3; ++k)
       for(int c = 0; c < 3; ++c)
-        p[k][c] = UFT(xyz[3 * out.m_corner_vertex[3 * fi + k] + c]);
+        p[k][c] = xyz[3 * out.m_corner_vertex[3 * fi + k] + c];
     for(int k = 0; k < 3; ++k)
     {
-      const UFT* a = p[k];
-      const UFT* b = p[(k + 1) % 3];
-      const UFT* c = p[(k + 2) % 3];
-      const UFT ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-      const UFT ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-      const UFT n[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
+      const FT* a = p[k];
+      const FT* b = p[(k + 1) % 3];
+      const FT* c = p[(k + 2) % 3];
+      const FT ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+      const FT ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      const FT n[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
       using std::sqrt;
-      const UFT len = sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
-      const UFT twice_area = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      const FT len = sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
+      const FT twice_area = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
       const Index hi = Index(3 * fi + k);
-      out.m_length[hi] = FT(len);
-      out.m_apex[hi] = {FT((ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2]) / len), FT(twice_area / len)};
+      out.m_length[hi] = len;
+      out.m_apex[hi] = {(ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2]) / len, twice_area / len};
       if(!(len > FT(0)) || !(out.m_apex[hi].y > FT(0)) || !CGAL::is_finite(out.m_apex[hi].x) || !CGAL::is_finite(out.m_apex[hi].y))
         throw std::invalid_argument("face " + std::to_string(fi) + " is degenerate (zero length edge or zero area)");
     }

@@ -424,9 +424,9 @@ private:
   }
 
   // `u` starts no later than `w`. Their overlap is cut where D_u - D_w = 0 (a hyperbola meets the
-  // edge at most twice); on each piece in between the difference has one sign, sampled at the
-  // piece's ends and middle. A piece where the two tie within rounding goes to `u`; a piece
-  // whose samples disagree is left alone.
+  // edge at most twice); on each piece in between the difference has one sign, which the
+  // piece's middle tells: its ends are roots or near-ties, so only a clear contradiction there
+  // leaves the piece alone. A piece where the two tie within rounding goes to `u`.
   void trim_pair(Win& u, Win& w) const
   {
     const FT lo = (std::max)(u.b0, w.b0);
@@ -478,9 +478,14 @@ private:
       for(int k = 0; k < pieces; ++k)
       {
         const FT at_middle = difference((cuts[k] + cuts[k + 1]) / FT(2));
-        const FT fmin = (std::min)(at_middle, (std::min)(at_cut[k], at_cut[k + 1]));
-        const FT fmax = (std::max)(at_middle, (std::max)(at_cut[k], at_cut[k + 1]));
-        sign[k] = fmin > m ? 1 : (fmax < m && fmin > -m) || fmax < -m ? -1 : 0;
+        const FT fmin = (std::min)(at_cut[k], at_cut[k + 1]);
+        const FT fmax = (std::max)(at_cut[k], at_cut[k + 1]);
+        if(at_middle > m)
+          sign[k] = fmin > -m ? 1 : 0;
+        else if(at_middle < -m)
+          sign[k] = fmax < m ? -1 : 0;
+        else
+          sign[k] = fmin > -m && fmax < m ? -1 : 0;
       }
     }
     int opposite_sign[3];
