@@ -14,12 +14,17 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -64,6 +69,321 @@ struct Repair_visitor : CGAL::Polygon_mesh_processing::Default_orientation_visit
 
 } // namespace internal
 
+// CGAL's OFF reader allocates what the header declares (vertices, faces) and what each face line
+// declares (its number of vertices) before reading them, and converts indices from double to
+// size_t unchecked: a file of a few bytes could claim gigabytes, or a negative index. Such files
+// are refused here, before CGAL reads them: declared counts must fit in the file's bytes, and a
+// face line must list as many vertex indices as it declares, each in [0, vertices). Only the
+// text format's faces are walked; binary OFF gets the header check.
+inline void check_off_declarations(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const std::streamoff end = in.tellg();
+  if(!in || end < 0)
+    return; // CGAL's reader reports it
+  const long long bytes = static_cast<long long>(end);
+  in.seekg(0);
+  const auto skip_comments = [&in] {
+    for(;;)
+    {
+      in >> std::ws;
+      if(in.peek() != '#')
+        return;
+      in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    }
+  };
+  const auto read_word = [&in] {
+    std::string word;
+    while(std::isalnum(in.peek()))
+      word += char(in.get());
+    return word;
+  };
+  const auto too_large = [&](long long vertices, long long faces) {
+    return Input_error("'" + path + "' declares " + std::to_string(vertices) + " vertices and " +
+                       std::to_string(faces) + " faces, more than its " + std::to_string(bytes) +
+                       " bytes can hold");
+  };
+
+  skip_comments();
+  const std::string keyword = read_word();
+  in.get(); // CGAL's reader takes the character that ends the keyword, whatever it is
+  if(keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
+    return; // not a header CGAL reads as OFF: it says so
+  const bool dimensional = keyword.find('n') != std::string::npos;
+  const bool colours = keyword.find('C') != std::string::npos;
+  const int homogeneous = keyword.find('4') != std::string::npos ? 1 : 0;
+  const bool normals = keyword.find('N') != std::string::npos;
+  const bool textures = keyword.compare(0, 2, "ST") == 0;
+  skip_comments();
+  if(std::isalpha(in.peek()))
+  {
+    if(read_word() != "BINARY")
+      return;
+    if(in.get() != '\n')
+      in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    const auto int32 = [&in] {
+      unsigned char b[4] = {0, 0, 0, 0};
+      in.read(reinterpret_cast<char*>(b), 4);
+      return static_cast<std::int32_t>((std::uint32_t(b[0]) << 24) | (std::uint32_t(b[1]) << 16) |
+                                       (std::uint32_t(b[2]) << 8) | std::uint32_t(b[3]));
+    };
+    if(dimensional)
+      int32();
+    const long long vertices = int32(), faces = int32();
+    if(in && (vertices < 0 || faces < 0 || 12 * vertices + 4 * faces > bytes))
+      throw too_large(vertices, faces);
+    return;
+  }
+
+  long long vertices = -1, faces = -1, edges = 0;
+  if(dimensional)
+    in >> vertices; // the dimension
+  in >> vertices >> faces >> edges;
+  if(!in)
+    return;
+  // a vertex line takes at least 5 bytes ("0 0 0"), a face line at least 1
+  if(vertices < 0 || faces < 0 || vertices > bytes || faces > bytes || 5 * vertices + faces > bytes)
+    throw too_large(vertices, faces);
+
+  // the body as CGAL reads it: one line a record, after blank and comment lines
+  std::string line;
+  std::vector<double> entries;
+  const auto read_entries = [&]() {
+    skip_comments();
+    if(!std::getline(in, line))
+      return false;
+    std::istringstream numbers(line.substr(0, line.find('#')));
+    entries.clear();
+    double entry;
+    while(numbers >> entry)
+      entries.push_back(entry);
+    return true;
+  };
+  // With a C in the keyword, CGAL takes what follows the coordinates (normals, texture) or the
+  // indices as a colour: 1 entry, an index into a table of 149 colours, or 3 (or 4) components,
+  // converted to unsigned char. Other counts make it read past the line's numbers, other values
+  // past the table or outside unsigned char: refused, with every record alike since CGAL decides
+  // from the first one that has colours.
+  long long colour_entries_seen = -1;
+  const auto check_colour = [&](long long first, const std::string& what) {
+    if(!colours)
+      return;
+    const long long n = static_cast<long long>(entries.size()) - first;
+    bool valid = (n == 0 || n == 1 || n == 3 || n == 4) && (colour_entries_seen < 0 || n == colour_entries_seen);
+    if(valid && n == 1)
+      valid = entries[first] >= 0. && entries[first] < 149.;
+    if(valid && n >= 3)
+    {
+      bool integers = true;
+      for(long long k = first; k < first + 3; ++k)
+        integers = integers && entries[k] == std::floor(entries[k]);
+      for(long long k = first; k < first + 3; ++k)
+        valid = valid && entries[k] >= 0. && entries[k] <= (integers ? 255. : 1.);
+    }
+    if(!valid)
+      throw Input_error(what + " of '" + path + "' has a colour CGAL cannot read (its reader would go astray)");
+    colour_entries_seen = n;
+  };
+  for(long long v = 0; v < vertices; ++v)
+  {
+    if(!read_entries())
+      return;
+    if(colours)
+      check_colour((3 + homogeneous) * (normals ? 2 : 1) + (textures ? 2 + homogeneous : 0),
+                   "vertex " + std::to_string(v));
+  }
+  colour_entries_seen = -1;
+  for(long long f = 0; f < faces; ++f)
+  {
+    if(!read_entries())
+      return;
+    if(entries.empty())
+      return;
+    const double size = entries[0];
+    if(!(size >= 0.) || size != std::floor(size) || size > double(entries.size() - 1))
+      throw Input_error("face " + std::to_string(f) + " of '" + path + "' does not list the " +
+                        (std::isfinite(size) ? std::to_string(static_cast<long long>(size)) : std::string("?")) +
+                        " vertex indices it declares");
+    for(std::size_t k = 1; k <= std::size_t(size); ++k)
+      if(!(entries[k] >= 0.) || !(entries[k] < double(vertices)) || entries[k] != std::floor(entries[k]))
+      {
+        std::ostringstream index;
+        index << entries[k];
+        throw Input_error("face " + std::to_string(f) + " refers to vertex " + index.str() + ", but the file has " +
+                          std::to_string(vertices) + " vertices");
+      }
+    check_colour(static_cast<long long>(size) + 1, "face " + std::to_string(f));
+  }
+}
+
+// CGAL's PLY reader allocates each list (a face's vertex indices) at the size it declares before
+// reading it, and iterates over each element as many times as the header says, even an element
+// without properties: a file of a few bytes could claim gigabytes, a negative size, or keep the
+// reader busy for ever; and a property declared before any element makes it write through
+// `back()` of an empty vector (a segmentation fault). Refused here first: properties must follow
+// an element, an element's count and a list's size must fit in the file's bytes (lists are
+// walked in the text and binary formats alike).
+inline void check_ply_declarations(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const std::streamoff end = in.tellg();
+  if(!in || end < 0)
+    return;
+  const long long bytes = static_cast<long long>(end);
+  in.seekg(0);
+
+  struct Property
+  {
+    int size = 0;       // bytes of the value (of each entry, for a list)
+    int count_size = 0; // bytes of a list's size; 0 for a scalar
+    bool count_signed = false;
+  };
+  struct Element
+  {
+    std::string name;
+    long long count = 0;
+    std::vector<Property> properties;
+  };
+  const auto type_size = [](const std::string& type, bool& is_signed) {
+    is_signed = type == "char" || type == "short" || type == "int" || type == "int8" || type == "int16" ||
+                type == "int32";
+    if(type == "char" || type == "uchar" || type == "int8" || type == "uint8")
+      return 1;
+    if(type == "short" || type == "ushort" || type == "int16" || type == "uint16")
+      return 2;
+    if(type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" || type == "float32")
+      return 4;
+    if(type == "double" || type == "float64")
+      return 8;
+    return 0;
+  };
+
+  std::string line, format;
+  std::vector<Element> elements;
+  if(!std::getline(in, line) || line.compare(0, 3, "ply") != 0)
+    return;
+  for(;;)
+  {
+    if(!std::getline(in, line))
+      return;
+    if(!line.empty() && line.back() == '\r')
+      line.pop_back();
+    std::istringstream words(line);
+    std::string word;
+    words >> word;
+    if(word == "end_header")
+      break;
+    if(word == "format")
+      words >> format;
+    else if(word == "element")
+    {
+      Element e;
+      if(!(words >> e.name >> e.count))
+        return;
+      if(e.count < 0 || e.count > bytes)
+        throw Input_error("'" + path + "' declares " + std::to_string(e.count) + " elements '" + e.name +
+                          "', more than its " + std::to_string(bytes) + " bytes can hold");
+      elements.push_back(e);
+    }
+    else if(word == "property")
+    {
+      if(elements.empty()) // CGAL's reader would add it to the last of no elements
+        throw Input_error("'" + path + "': the PLY header has a property before any element");
+      std::string type, count_type, item_type;
+      words >> type;
+      Property p;
+      bool is_signed = false;
+      if(type == "list")
+      {
+        words >> count_type >> item_type;
+        p.count_size = type_size(count_type, p.count_signed);
+        p.size = type_size(item_type, is_signed);
+        if(p.count_size == 0 || count_type.compare(0, 5, "float") == 0 || count_type == "double")
+          return; // an unknown or floating-point size type: left to CGAL's reader
+      }
+      else
+        p.size = type_size(type, is_signed);
+      if(p.size == 0)
+        return; // an unknown type: CGAL's reader says so
+      elements.back().properties.push_back(p);
+    }
+  }
+
+  const bool ascii = format == "ascii";
+  const bool big_endian = format == "binary_big_endian";
+  if(!ascii && !big_endian && format != "binary_little_endian")
+    return;
+  const auto list_too_large = [&](const Element& e, long long record, long long size) {
+    return Input_error("'" + path + "': element " + std::to_string(record) + " of '" + e.name + "' declares a list of " +
+                       std::to_string(size) + " entries, " +
+                       (size < 0 ? std::string("a negative size") : "more than the file's " + std::to_string(bytes) + " bytes can hold"));
+  };
+  std::string token;
+  for(const Element& e : elements)
+  {
+    bool has_list = false;
+    long long record_size = 0;
+    for(const Property& p : e.properties)
+    {
+      has_list = has_list || p.count_size > 0;
+      record_size += p.size;
+    }
+    if(!has_list)
+    {
+      if(ascii)
+      {
+        for(long long r = 0; r < e.count * static_cast<long long>(e.properties.size()); ++r)
+          if(!(in >> token))
+            return;
+      }
+      else if(!in.seekg(static_cast<std::streamoff>(e.count * record_size), std::ios::cur))
+        return;
+      continue;
+    }
+    for(long long r = 0; r < e.count; ++r)
+      for(const Property& p : e.properties)
+      {
+        if(p.count_size == 0)
+        {
+          if(ascii ? !(in >> token) : !in.seekg(p.size, std::ios::cur))
+            return;
+          continue;
+        }
+        long long size = 0;
+        if(ascii)
+        {
+          double value;
+          if(!(in >> value))
+            return;
+          if(!(value >= 0.) || value > double(bytes))
+            throw list_too_large(e, r, std::isfinite(value) ? static_cast<long long>(value) : -1);
+          size = static_cast<long long>(value);
+          for(long long k = 0; k < size; ++k)
+            if(!(in >> token))
+              return;
+        }
+        else
+        {
+          unsigned char b[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+          if(!in.read(reinterpret_cast<char*>(b), p.count_size))
+            return;
+          std::uint64_t u = 0;
+          for(int k = 0; k < p.count_size; ++k)
+            u |= std::uint64_t(b[big_endian ? p.count_size - 1 - k : k]) << (8 * k);
+          if(p.count_signed && (u >> (8 * p.count_size - 1)) != 0)
+            throw list_too_large(e, r, static_cast<long long>(u) - (1LL << (8 * p.count_size)));
+          if(u > std::uint64_t(bytes))
+            throw list_too_large(e, r, static_cast<long long>(u));
+          size = static_cast<long long>(u);
+          if(!in.seekg(static_cast<std::streamoff>(size * p.size), std::ios::cur))
+            return;
+        }
+      }
+  }
+}
+
 inline Loaded_soup load_soup(const std::string& path)
 {
   Loaded_soup soup;
@@ -72,6 +392,15 @@ inline Loaded_soup load_soup(const std::string& path)
     std::ifstream probe(path);
     if(!probe.good())
       throw Input_error("cannot read '" + path + "': " + (errno != 0 ? std::strerror(errno) : "cannot open it"));
+  }
+  {
+    std::string extension = path.substr(path.rfind('.') == std::string::npos ? path.size() : path.rfind('.') + 1);
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if(extension == "off")
+      check_off_declarations(path);
+    else if(extension == "ply")
+      check_ply_declarations(path);
   }
   if(!CGAL::IO::read_polygon_soup(path, soup.points, soup.polygons, CGAL::parameters::verbose(false)))
     throw Input_error("cannot read '" + path + "' as a mesh (unsupported format, or an invalid or truncated file)");
