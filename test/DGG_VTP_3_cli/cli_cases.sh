@@ -1,18 +1,54 @@
 #!/usr/bin/env bash
 # Command-line tests of dggvtp: one case per call, named after the input class it guards.
 # usage: cli_cases.sh DGGVTP DATA_DIR MESH_DIR CASE
+# Every run also checks the guarantees of the input policy whatever the case: no signal, no hang
+# (60 s), no NaN in the output, the statistics or the summary, and no file created, changed or
+# removed other than the --output and --stats files (dggvtp runs inside the scratch directory).
 set -u
 bin=$1 data=$2 meshes=$3 case=$4
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+work=$(mktemp -d)   # dggvtp's working directory: the only files in it are the test's
+meta=$(mktemp -d)   # the test's own bookkeeping
+trap 'rm -rf "$work" "$meta"' EXIT
 fail() { echo "FAIL ($case): $*" >&2; exit 1; }
+
+# the state of every file under $work except the named outputs, and of the mesh file
+snapshot() {
+  local mesh=$1; shift
+  find "$work" -mindepth 1 -printf '%p %s %T@ %m\n' | sort |
+    awk -v skip="$*" 'BEGIN { n = split(skip, s, " "); for (i = 1; i <= n; ++i) out[s[i]] = 1 } !($1 in out)'
+  if [ -f "$mesh" ]; then stat -c '%n %s %Y %a' "$mesh"; md5sum < "$mesh"; fi
+}
 
 # run ARGS...: sets $rc, $out (stdout) and $err (stderr)
 run() {
-  "$bin" "$@" >"$work/stdout" 2>"$work/stderr"
+  local args=("$@") outputs=() mesh="" i
+  for ((i = 0; i < ${#args[@]}; ++i)); do
+    case ${args[i]} in
+      --output|--stats) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
+      --source|--epsilon|--precision|--threads) i=$((i + 1)) ;;
+      -*) ;;
+      *) [ -n "$mesh" ] || mesh=${args[i]} ;;
+    esac
+  done
+  snapshot "$mesh" "${outputs[@]}" > "$meta/before"
+  (cd "$work" && exec timeout 60 "$bin" "$@") >"$meta/stdout" 2>"$meta/stderr"
   rc=$?
-  out=$(cat "$work/stdout")
-  err=$(cat "$work/stderr")
+  out=$(cat "$meta/stdout")
+  err=$(cat "$meta/stderr")
+  [ "$rc" -ne 124 ] || fail "no answer within 60 s: $*"
+  [ "$rc" -lt 128 ] || fail "killed by signal $((rc - 128)): $*; stderr: $err"
+  snapshot "$mesh" "${outputs[@]}" > "$meta/after"
+  cmp -s "$meta/before" "$meta/after" ||
+    fail "files other than --output/--stats were touched: $(diff "$meta/before" "$meta/after")"
+  local o
+  for o in "${outputs[@]}"; do
+    if [ "$o" = - ]; then
+      ! printf '%s\n' "$out" | grep -qiw nan || fail "NaN on standard output"
+    elif [ -f "$o" ]; then
+      ! grep -qiw nan "$o" || fail "NaN in $o"
+    fi
+  done
+  ! printf '%s\n' "$out" "$err" | grep -qi 'farthest at -\?nan' || fail "NaN in the summary"
 }
 expect_rc() { [ "$rc" -eq "$1" ] || fail "exit status $rc, expected $1; stderr: $err"; }
 # bad input: exit 2, exactly one line on stderr, starting with error:, no output file left behind
@@ -27,16 +63,41 @@ expect_usage_error() {
   expect_rc 1
   [[ "$err" == error:* ]] || fail "stderr does not start with error: $err"
 }
-# lines FILE EXPECTED...: the distances, compared to 1e-12 relative (inf exactly)
-expect_lines() {
-  local file=$1; shift
+# expect_lines FILE EXPECTED...: the distances, compared to 1e-12 relative (inf exactly)
+expect_lines() { expect_lines_within 1e-12 "$@"; }
+# expect_lines_within TOLERANCE FILE EXPECTED...: the same, to TOLERANCE relative
+expect_lines_within() {
+  local tolerance=$1 file=$2; shift 2
   local expected="$*"
-  awk -v expected="$expected" 'BEGIN { n = split(expected, e, " ") }
+  awk -v expected="$expected" -v tol="$tolerance" 'BEGIN { n = split(expected, e, " ") }
     { ++i; if (i > n) { print "extra line " i; bad = 1; next }
       if (e[i] == "inf" || $1 == "inf") { if ($1 != e[i]) { print "line " i ": " $1 " != " e[i]; bad = 1 } }
-      else { d = $1 - e[i]; if (d < 0) d = -d; if (d > 1e-12 * (e[i] < 0 ? -e[i] : e[i]) + 1e-300) { print "line " i ": " $1 " != " e[i]; bad = 1 } } }
+      else { d = $1 - e[i]; if (d < 0) d = -d; if (d > tol * (e[i] < 0 ? -e[i] : e[i]) + 1e-300) { print "line " i ": " $1 " != " e[i]; bad = 1 } } }
     END { if (i != n) { print i " lines, expected " n; bad = 1 } exit bad }' "$file" || fail "unexpected distances in $file"
 }
+# expect_warning WORD: exit status 0 and a warning on stderr that mentions WORD
+expect_warning() {
+  expect_rc 0
+  printf '%s\n' "$err" | grep -q "^warning:.*$1" || fail "no warning about $1: $err"
+}
+# the mesh on standard input, as $work/NAME (the scratch directory, checked by run)
+input() { cat > "$work/$1"; }
+# a binary STL (80-byte header, triangle count, 50 bytes a triangle) whose floats are given as
+# 8-digit hex words (bits of an IEEE float), 9 a triangle: binary_stl NAME COUNT WORDS...
+le32() { printf "\\x${1:6:2}\\x${1:4:2}\\x${1:2:2}\\x${1:0:2}"; }
+binary_stl() {
+  local name=$1 count=$2 k=0 w; shift 2
+  { printf 'binary STL written by cli_cases.sh%46s' ''
+    le32 "$(printf '%08x' "$count")"
+    for w in "$@"; do
+      [ $((k % 9)) -eq 0 ] && printf '\0\0\0\0\0\0\0\0\0\0\0\0'   # the normal
+      le32 "$w"
+      k=$((k + 1))
+      [ $((k % 9)) -eq 0 ] && printf '\0\0'                       # attribute byte count
+    done; } > "$work/$name"
+}
+# float words
+f0=00000000 f1=3f800000 fnan=7fc00000 finf=7f800000
 
 spot=$meshes/spot.ply
 case $case in
@@ -117,6 +178,177 @@ case $case in
     run "$spot" --quiet --output /dev/null --stats /dev/null; expect_rc 0
     [ -c /dev/null ] || fail "/dev/null was replaced by a file" ;;
   empty_output_name) run "$spot" --output ""; expect_usage_error ;;
+
+  # ---- hostile input, one case per input class of the input policy (issue 5); the meshes are
+  # written here, into the scratch directory
+  # file level
+  header_only) printf 'OFF\n0 0 0\n' | input h.off; run "$work/h.off" --output "$work/d.txt"; expect_input_error ;;
+  no_faces)  # vertices only: every vertex but the source is isolated
+    printf 'OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n' | input v.off
+    run "$work/v.off" --quiet --source 1 --output "$work/d.txt"; expect_rc 0
+    expect_lines "$work/d.txt" inf 0 inf ;;
+  declared_sizes_beyond_file)  # a few bytes that claim billions of elements: refused before allocating
+    for header in '2000000000 1 0' '1 2000000000 0' '500000000 500000000 0'; do
+      printf 'OFF\n%s\n0 0 0\n' "$header" | input big.off
+      run "$work/big.off" --output "$work/d.txt"; expect_input_error
+      [[ "$err" != *"out of memory"* ]] || fail "$header: $err"
+    done
+    printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n1000000000 0 1 2\n' | input bigface.off
+    run "$work/bigface.off" --output "$work/d.txt"; expect_input_error
+    [[ "$err" != *"out of memory"* ]] || fail "$err"
+    # PLY: elements (one without properties: read a billion times over), and list sizes in text
+    # and binary, too large or negative
+    header='ply\nformat %s 1.0\nelement vertex %s\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list int int vertex_indices\n%bend_header\n'
+    for variant in "ascii|3||0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n" "ascii|3||0 0 0\n1 0 0\n0 1 0\n-5 0 1 2\n" \
+                   "ascii|2000000000||0 0 0\n" "ascii|3|element nothing 1000000000000000000\n|0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"; do
+      IFS='|' read -r format count extra body <<< "$variant"
+      printf "$header$body" "$format" "$count" "$extra" | input big.ply
+      run "$work/big.ply" --output "$work/d.txt"; expect_input_error
+      [[ "$err" != *"out of memory"* && "$err" != *vector* ]] || fail "$variant: $err"
+    done
+    for size in 77359400 fffffffb; do   # 2e9 and -5, as int32
+      { printf "$header" binary_little_endian 3 ''
+        printf '\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0'
+        le32 "$size"
+        printf '\0\0\0\0\1\0\0\0\2\0\0\0'; } > "$work/big.ply"
+      run "$work/big.ply" --output "$work/d.txt"; expect_input_error
+      [[ "$err" != *"out of memory"* && "$err" != *vector* ]] || fail "binary $size: $err"
+    done ;;
+  ply_property_before_element)  # found by the fuzzer: CGAL's reader crashed on it
+    printf 'ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n' | input p.ply
+    run "$work/p.ply" --output "$work/d.txt"; expect_input_error ;;
+  off_numbers_cgal_cannot_convert)  # found by the fuzzer: CGAL converts them to integers unchecked
+    printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 6e77\n' | input i.off        # index beyond size_t
+    run "$work/i.off" --output "$work/d.txt"; expect_input_error
+    printf 'COFF\n3 1 0\n0 0 0 5000000\n1 0 0 1\n0 1 0 1\n3 0 1 2\n' | input c.off  # colour table index
+    run "$work/c.off" --output "$work/d.txt"; expect_input_error
+    printf 'COFF\n3 1 0\n0 0 0 1e300 0 0\n1 0 0 1 1 1\n0 1 0 1 1 1\n3 0 1 2\n' | input c.off
+    run "$work/c.off" --output "$work/d.txt"; expect_input_error
+    # colours CGAL reads are fine
+    printf 'COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 0.5 0.5 0.5\n0 1 0 1 2 3\n3 0 1 2 1 1 1\n' | input ok.off
+    run "$work/ok.off" --quiet --output "$work/d.txt"; expect_rc 0
+    expect_lines "$work/d.txt" 0 1 1 ;;
+  truncated_binary_stl)  # the count says 1000 triangles, the file holds one
+    binary_stl t.stl 1000 $f0 $f0 $f0 $f1 $f0 $f0 $f0 $f1 $f0
+    run "$work/t.stl" --output "$work/d.txt"; expect_input_error ;;
+  garbage_in_known_formats)
+    for ext in off ply obj stl; do
+      tail -c +4097 "$bin" | head -c 3000 > "$work/g.$ext"   # arbitrary bytes (of dggvtp itself)
+      printf '\x00\x01 solid ply OFF\n' >> "$work/g.$ext"
+      run "$work/g.$ext" --output "$work/d.txt"
+      [ "$rc" -eq 0 ] || expect_input_error
+      rm -f "$work/d.txt"
+    done
+    printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n' | input noend.ply
+    run "$work/noend.ply" --output "$work/d.txt"; expect_input_error ;;
+  unsupported_extension)  # a valid OFF file under names CGAL does not read
+    for name in tri.txt tri off.; do
+      printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' | input "$name"
+      run "$work/$name" --output "$work/d.txt"; expect_input_error
+    done ;;
+  # faces
+  face_with_two_vertices)
+    printf 'OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n2 0 1\n' | input f.off
+    run "$work/f.off" --output "$work/d.txt"; expect_input_error ;;
+  face_index_out_of_range)
+    printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' | input f.obj
+    run "$work/f.obj" --output "$work/d.txt"; expect_input_error ;;
+  concave_polygon_is_triangulated)  # an L-shaped hexagon; from vertex 1 the path to 4 bends at 3
+    printf 'OFF\n6 1 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n6 0 1 2 3 4 5\n' | input l.off
+    run "$work/l.off" --source 1 --output "$work/d.txt"; expect_warning triangulated
+    expect_lines "$work/d.txt" 2 0 1 1.4142135623730951 2.4142135623730951 2.8284271247461903 ;;
+  polygon_with_collinear_vertices)  # a square with a vertex in the middle of each side
+    printf 'OFF\n8 1 0\n0 0 0\n1 0 0\n2 0 0\n2 1 0\n2 2 0\n1 2 0\n0 2 0\n0 1 0\n8 0 1 2 3 4 5 6 7\n' | input c.off
+    run "$work/c.off" --output "$work/d.txt"; expect_warning triangulated
+    expect_lines "$work/d.txt" 0 1 2 2.23606797749979 2.8284271247461903 2.23606797749979 2 1 ;;
+  # coordinates
+  inf_coordinate)
+    printf 'OFF\n3 1 0\n0 0 0\ninf 0 0\n0 1 0\n3 0 1 2\n' | input i.off
+    run "$work/i.off" --output "$work/d.txt"; expect_input_error
+    printf 'OFF\n3 1 0\n0 0 0\n1e999 0 0\n0 1 0\n3 0 1 2\n' | input o.off   # overflows on reading
+    run "$work/o.off" --output "$work/d.txt"; expect_input_error ;;
+  nan_and_inf_in_binary_stl)  # bit patterns that a text reader never sees
+    for bad in $fnan $finf; do
+      binary_stl b.stl 1 $f0 $f0 $f0 $f1 $f0 $f0 $f0 $bad $f0
+      run "$work/b.stl" --output "$work/d.txt"; expect_input_error
+      run "$work/b.stl" --precision float --output "$work/d.txt"; expect_input_error
+    done ;;
+  huge_coordinates)  # a unit square scaled by 1e12, in double and float
+    printf 'OFF\n4 2 0\n0 0 0\n1e12 0 0\n1e12 1e12 0\n0 1e12 0\n3 0 1 2\n3 0 2 3\n' | input h.off
+    run "$work/h.off" --quiet --output "$work/d.txt"; expect_rc 0
+    expect_lines "$work/d.txt" 0 1e12 1.4142135623730951e12 1e12
+    run "$work/h.off" --quiet --precision float --output "$work/d.txt"; expect_rc 0
+    expect_lines_within 1e-6 "$work/d.txt" 0 1e12 1.4142135623730951e12 1e12
+    run "$work/h.off" --quiet --epsilon 1e-4 --output "$work/d.txt"; expect_rc 0
+    expect_lines_within 1e-4 "$work/d.txt" 0 1e12 1.4142135623730951e12 1e12 ;;
+  tiny_coordinates)  # the same scaled by 1e-12
+    printf 'OFF\n4 2 0\n0 0 0\n1e-12 0 0\n1e-12 1e-12 0\n0 1e-12 0\n3 0 1 2\n3 0 2 3\n' | input t.off
+    run "$work/t.off" --quiet --output "$work/d.txt"; expect_rc 0
+    expect_lines "$work/d.txt" 0 1e-12 1.4142135623730951e-12 1e-12
+    run "$work/t.off" --quiet --precision float --output "$work/d.txt"; expect_rc 0
+    expect_lines_within 1e-6 "$work/d.txt" 0 1e-12 1.4142135623730951e-12 1e-12
+    run "$work/t.off" --quiet --epsilon 1e-4 --output "$work/d.txt"; expect_rc 0
+    expect_lines_within 1e-4 "$work/d.txt" 0 1e-12 1.4142135623730951e-12 1e-12 ;;
+  far_from_origin)  # unit triangles at 1e12: exact in double; float rounds them to one point
+    printf 'OFF\n4 2 0\n1e12 1e12 0\n1000000000001 1e12 0\n1000000000001 1000000000001 0\n1e12 1000000000001 0\n3 0 1 2\n3 0 2 3\n' | input f.off
+    run "$work/f.off" --quiet --output "$work/d.txt"; expect_rc 0
+    expect_lines "$work/d.txt" 0 1 1.4142135623730951 1
+    rm "$work/d.txt"
+    run "$work/f.off" --precision float --output "$work/d.txt"; expect_input_error ;;
+  coordinates_too_large_to_square)  # edge lengths squared overflow a double
+    printf 'OFF\n3 1 0\n0 0 0\n1e200 0 0\n0 1e200 0\n3 0 1 2\n' | input l.off
+    run "$work/l.off" --output "$work/d.txt"; expect_input_error
+    printf 'OFF\n3 1 0\n0 0 0\n1e30 0 0\n0 1e30 0\n3 0 1 2\n' | input m.off   # beyond float's 3.4e38 only when squared
+    run "$work/m.off" --quiet --precision float --output "$work/d.txt"; expect_rc 0
+    expect_lines_within 1e-6 "$work/d.txt" 0 1e30 1e30 ;;
+  duplicate_points)  # 4 and 5 repeat the places of 1 and 2: a crack along the diagonal, and 6 unused
+    printf 'OFF\n7 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n1 0 0\n0 1 0\n0 0 0\n3 0 1 2\n3 4 3 5\n' | input d.off
+    run "$work/d.off" --quiet --output "$work/d.txt"; expect_rc 0
+    expect_lines "$work/d.txt" 0 1 1 inf inf inf inf ;;
+  zero_length_edge)  # two vertices at the same place in one face
+    printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n1 0 0\n0 1 0\n3 0 1 3\n3 1 2 3\n' | input z.off
+    run "$work/z.off" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *degenerate* ]] || fail "$err" ;;
+  needle_triangle)  # a triangle 1 long and 1e-9 wide, crossed by the path from 3 to 1
+    printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n1 1e-9 0\n0 1 0\n1 1 0\n3 0 1 2\n3 0 2 4\n3 0 4 3\n' | input n.off
+    for mode in "" "--epsilon 1e-4" "--precision float"; do
+      run "$work/n.off" --quiet --source 3 $mode --output "$work/d.txt"; expect_rc 0
+      expect_lines_within 1e-4 "$work/d.txt" 1 1.4142135623730951 1.4142135616659883 0 1
+    done ;;
+  cap_triangle)  # an angle of almost pi: the apex 1e-9 off its opposite edge, crossed by paths
+    printf 'OFF\n5 4 0\n0 0 0\n2 0 0\n1 1e-9 0\n1 1 0\n1 -1 0\n3 0 1 2\n3 0 2 3\n3 2 1 3\n3 0 4 1\n' | input c.off
+    for mode in "" "--epsilon 1e-4" "--precision float"; do
+      run "$work/c.off" --quiet --source 4 $mode --output "$work/d.txt"; expect_rc 0
+      expect_lines_within 1e-4 "$work/d.txt" 1.4142135623730951 1.4142135623730951 1.000000001 2 0
+    done ;;
+  # surface
+  non_manifold_edge)  # three faces on the edge 0-1
+    printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n' | input e.off
+    run "$work/e.off" --output "$work/d.txt"; expect_warning "non-manifold\|reoriented\|split"
+    expect_lines "$work/d.txt" 0 1 1 1 1
+    # the three sheets are cut apart along the edge: from a vertex of one sheet, the vertices
+    # only the others hold are unreachable (said by the warning; paths do not cross the edge)
+    run "$work/e.off" --quiet --source 2 --output "$work/d.txt"; expect_rc 0
+    expect_lines "$work/d.txt" 1 1.4142135623730951 0 inf inf ;;
+  non_manifold_vertex_paths_pass)  # two fans meeting at 0: paths from one to the other go through it
+    run "$data/non_manifold_vertex.off" --quiet --source 1 --output "$work/d.txt"; expect_rc 0
+    expect_lines "$work/d.txt" 1 0 1.4142135623730951 2 2 ;;
+  inconsistent_orientation_warns)
+    run "$data/inconsistent_orientation.off" --output "$work/d.txt"; expect_warning reoriented
+    expect_lines "$work/d.txt" 0 1 1 1.4142135623730951 ;;
+  moebius_strip)  # not orientable: cut open where the orientation flips, every vertex still reached
+    printf 'OFF\n6 6 0\n0 0 0\n1 0 0\n2 0 1\n0 1 0\n1 1 0\n2 1 -1\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 2 3 0\n3 2 0 5\n' | input m.off
+    run "$work/m.off" --output "$work/d.txt"; expect_warning "split\|reoriented"
+    [ "$(wc -l < "$work/d.txt")" -eq 6 ] || fail "not one line per vertex"
+    ! grep -q inf "$work/d.txt" || fail "a vertex of the strip is unreachable" ;;
+  source_on_boundary)  # an L-shaped flat mesh; from its corner 2 the paths to 6 and 7 touch the reflex corner 4
+    printf 'OFF\n8 6 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n0 2 0\n1 2 0\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 3 4 7\n3 3 7 6\n' | input l.off
+    for mode in "" "--precision float"; do
+      run "$work/l.off" --quiet --source 2 $mode --output "$work/d.txt"; expect_rc 0
+      expect_lines_within 1e-6 "$work/d.txt" 2 1 0 2.23606797749979 1.4142135623730951 1 2.8284271247461903 2.4142135623730951
+    done
+    run "$work/l.off" --quiet --source 2 --epsilon 1e-4 --output "$work/d.txt"; expect_rc 0
+    expect_lines_within 1e-4 "$work/d.txt" 2 1 0 2.23606797749979 1.4142135623730951 1 2.8284271247461903 2.4142135623730951 ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"
