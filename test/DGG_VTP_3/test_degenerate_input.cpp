@@ -4,7 +4,12 @@
 // Author(s): DGG-VTP for CGAL team
 
 // Inputs the documentation rejects with std::invalid_argument: invalid sources, invalid
-// accuracies, faces that are not triangles, non-finite coordinates, degenerate triangles.
+// accuracies, faces that are not triangles, non-finite coordinates, degenerate triangles,
+// coordinates whose squares overflow. And inputs it accepts however hostile they look (needles,
+// caps, 1e12 and 1e-12 scales, borders, pinched vertices, meshes without faces): finite
+// distances, never a NaN, in both modes (guards against the crashes and NaNs of the MMP-derived
+// codes on scanned meshes: libigl / geometry-central / pygeodesic / tvb-gdist
+// `p->start() < p->stop()`, CGAL Surface_mesh_shortest_path on an isolated vertex).
 
 #include "test_utilities.h"
 
@@ -48,6 +53,58 @@ void require_constructor_throws(const Mesh& mesh)
   auto map = get(CGAL::dynamic_vertex_property_t<typename Solver::FT>(), mesh);
   BOOST_CHECK_THROW(CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, *vertices(mesh).begin(), map),
                     std::invalid_argument);
+}
+
+
+// distances from the i-th vertex, exact (accuracy 0) or DGG-VTP; every one checked not NaN
+template <class Mesh>
+std::vector<double> checked_distances(const Mesh& mesh, std::size_t source_index, double accuracy)
+{
+  const std::vector<double> d =
+    geodesic_distances(mesh, source_index, nullptr, CGAL::parameters::accuracy(accuracy));
+  for(std::size_t i = 0; i < d.size(); ++i)
+    BOOST_TEST(!std::isnan(d[i]), "vertex " << i << " (accuracy " << accuracy << ") is NaN");
+  return d;
+}
+
+// both modes against `truth` (inf where unreachable), to `tolerance` relative, plus epsilon for
+// DGG-VTP
+template <class Mesh>
+void check_both_modes(const Mesh& mesh, std::size_t source_index, const std::vector<double>& truth,
+                      double tolerance)
+{
+  for(double accuracy : {0., 1e-4})
+  {
+    const std::vector<double> d = checked_distances(mesh, source_index, accuracy);
+    BOOST_REQUIRE_EQUAL(d.size(), truth.size());
+    for(std::size_t i = 0; i < d.size(); ++i)
+    {
+      if(std::isinf(truth[i]))
+        BOOST_TEST(std::isinf(d[i]), "vertex " << i << ": " << d[i] << ", expected inf");
+      else
+        BOOST_TEST(std::abs(d[i] - truth[i]) <= (tolerance + accuracy) * truth[i] + 1e-300,
+                   "vertex " << i << " (accuracy " << accuracy << "): " << d[i] << ", expected " << truth[i]);
+    }
+  }
+}
+
+Soup scaled(Soup soup, double factor)
+{
+  for(auto& p : soup.points)
+    for(double& c : p)
+      c *= factor;
+  return soup;
+}
+
+// an L-shaped flat mesh: the unit squares [0,2]x[0,1] and [0,1]x[1,2], with the reflex border
+// corner 4 at (1, 1)
+Soup l_shape()
+{
+  Soup soup;
+  soup.points = {{0., 0., 0.}, {1., 0., 0.}, {2., 0., 0.}, {0., 1., 0.}, {1., 1., 0.}, {2., 1., 0.},
+                 {0., 2., 0.}, {1., 2., 0.}};
+  soup.faces = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {3, 4, 7}, {3, 7, 6}};
+  return soup;
 }
 
 } // namespace
@@ -136,6 +193,94 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(zero_length_edge, Config, All_configurations)
   Mesh mesh = make_mesh<Mesh>(tetrahedron());
   set_point(mesh, 3, 1., 0., 0.);  // onto vertex 1
   require_constructor_throws(mesh);
+}
+
+// |x| = 1e200: the squared edge lengths overflow (in float the coordinates themselves do)
+BOOST_AUTO_TEST_CASE_TEMPLATE(coordinates_too_large_to_square, Config, All_configurations)
+{
+  require_constructor_throws(make_mesh<typename Config::Mesh>(scaled(tetrahedron(), 1e200)));
+}
+
+// the unit tetrahedron scaled by 1e12 and by 1e-12: the distances scale with it
+BOOST_AUTO_TEST_CASE_TEMPLATE(huge_and_tiny_coordinates, Config, All_configurations)
+{
+  const double s2 = std::sqrt(2.);
+  for(double factor : {1e12, 1e-12})
+  {
+    BOOST_TEST_MESSAGE("scale " << factor);
+    const auto mesh = make_mesh<typename Config::Mesh>(scaled(tetrahedron(), factor));
+    check_both_modes(mesh, 0, {0., factor, factor, factor}, Config::tolerance);
+    check_both_modes(mesh, 1, {factor, 0., s2 * factor, s2 * factor}, Config::tolerance);
+  }
+}
+
+// A needle (edges 1, 1 and 1e-9) and a cap (an angle of pi - 2e-9) in flat meshes, crossed by
+// the paths: Euclidean distances, to the accuracy the sliver's conditioning allows.
+BOOST_AUTO_TEST_CASE_TEMPLATE(needle_triangle, Config, All_configurations)
+{
+  Soup soup;
+  soup.points = {{0., 0., 0.}, {1., 0., 0.}, {1., 1e-9, 0.}, {0., 1., 0.}, {1., 1., 0.}};
+  soup.faces = {{0, 1, 2}, {0, 2, 4}, {0, 4, 3}};
+  const auto mesh = make_mesh<typename Config::Mesh>(soup);
+  check_both_modes(mesh, 3, euclidean_distances(mesh, 3), 1e-6);
+  check_both_modes(mesh, 2, euclidean_distances(mesh, 2), 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(cap_triangle, Config, All_configurations)
+{
+  Soup soup;
+  soup.points = {{0., 0., 0.}, {2., 0., 0.}, {1., 1e-9, 0.}, {1., 1., 0.}, {1., -1., 0.}};
+  soup.faces = {{0, 1, 2}, {0, 2, 3}, {2, 1, 3}, {0, 4, 1}};
+  const auto mesh = make_mesh<typename Config::Mesh>(soup);
+  for(std::size_t source : {0, 2, 3, 4})
+    check_both_modes(mesh, source, euclidean_distances(mesh, source), 1e-6);
+}
+
+// a source on the border; the paths to 6 and 7 touch the reflex border corner 4
+BOOST_AUTO_TEST_CASE_TEMPLATE(source_on_border, Config, All_configurations)
+{
+  const auto mesh = make_mesh<typename Config::Mesh>(l_shape());
+  const double s2 = std::sqrt(2.);
+  check_both_modes(mesh, 2, {2., 1., 0., std::sqrt(5.), s2, 1., 2. * s2, 1. + s2}, Config::tolerance);
+  check_both_modes(mesh, 4, {s2, 1., s2, 1., 0., 1., s2, 1.}, Config::tolerance);
+}
+
+// two fans meeting at vertex 0 only (a Surface_mesh can hold it): paths pass through it
+BOOST_AUTO_TEST_CASE(pinched_vertex)
+{
+  Soup soup;
+  soup.points = {{0., 0., 0.}, {1., 0., 0.}, {0., 1., 0.}, {-1., 0., 0.}, {0., -1., 0.}};
+  soup.faces = {{0, 1, 2}, {0, 3, 4}};
+  const auto mesh = make_mesh<Sm_d::Mesh>(soup);
+  check_both_modes(mesh, 1, {1., 0., std::sqrt(2.), 2., 2.}, Sm_d::tolerance);
+  check_both_modes(mesh, 0, {0., 1., 1., 1., 1.}, Sm_d::tolerance);
+}
+
+// vertices and no face: the source at 0, every other vertex unreachable
+BOOST_AUTO_TEST_CASE_TEMPLATE(no_faces, Config, All_configurations)
+{
+  Soup soup;
+  soup.points = {{0., 0., 0.}, {1., 0., 0.}, {1., 0., 0.}};
+  const auto mesh = make_mesh<typename Config::Mesh>(soup);
+  const double inf = std::numeric_limits<double>::infinity();
+  check_both_modes(mesh, 1, {inf, 0., inf}, Config::tolerance);
+}
+
+// an empty mesh: nothing to ask; an empty source range: an error
+BOOST_AUTO_TEST_CASE(empty_mesh_and_no_source)
+{
+  using Mesh = Sm_d::Mesh;
+  const Mesh empty;
+  const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> empty_solver(empty);
+  BOOST_TEST(empty_solver.number_of_vertices() == 0u);
+  auto empty_map = get(CGAL::dynamic_vertex_property_t<double>(), empty);
+  BOOST_CHECK_THROW(empty_solver.compute_distances(Mesh::Vertex_index(0), empty_map), std::invalid_argument);
+
+  const Mesh mesh = make_mesh<Mesh>(tetrahedron());
+  const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
+  auto map = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  BOOST_CHECK_THROW(solver.compute_distances_to_nearest_source(std::vector<Mesh::Vertex_index>(), map),
+                    std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
