@@ -196,6 +196,15 @@ case $case in
     printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n1000000000 0 1 2\n' | input bigface.off
     run "$work/bigface.off" --output "$work/d.txt"; expect_input_error
     [[ "$err" != *"out of memory"* ]] || fail "$err"
+    # binary OFF: a face of 2e9 vertices, then the same file with a triangle (read)
+    for size in '\x7f\0\0\0' '\0\0\0\3'; do
+      { printf 'OFF BINARY\n\0\0\0\3\0\0\0\1\0\0\0\0'
+        printf '\0\0\0\0\0\0\0\0\0\0\0\0\x3f\x80\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x3f\x80\0\0\0\0\0\0'
+        printf "$size"'\0\0\0\0\0\0\0\1\0\0\0\2'; } > "$work/b.off"
+      run "$work/b.off" --quiet --output "$work/d.txt"
+      if [ "$size" = '\0\0\0\3' ]; then expect_rc 0; expect_lines "$work/d.txt" 0 1 1; rm "$work/d.txt"
+      else expect_input_error; fi
+    done
     # PLY: elements (one without properties: read a billion times over), and list sizes in text
     # and binary, too large or negative
     header='ply\nformat %s 1.0\nelement vertex %s\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list int int vertex_indices\n%bend_header\n'

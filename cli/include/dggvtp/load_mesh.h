@@ -73,8 +73,8 @@ struct Repair_visitor : CGAL::Polygon_mesh_processing::Default_orientation_visit
 // declares (its number of vertices) before reading them, and converts indices from double to
 // size_t unchecked: a file of a few bytes could claim gigabytes, or a negative index. Such files
 // are refused here, before CGAL reads them: declared counts must fit in the file's bytes, and a
-// face line must list as many vertex indices as it declares, each in [0, vertices). Only the
-// text format's faces are walked; binary OFF gets the header check.
+// face line must list as many vertex indices as it declares, each in [0, vertices). In binary
+// OFF, the face sizes are checked when the vertices are plain points.
 inline void check_off_declarations(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -131,8 +131,28 @@ inline void check_off_declarations(const std::string& path)
     if(dimensional)
       int32();
     const long long vertices = int32(), faces = int32();
-    if(in && (vertices < 0 || faces < 0 || 12 * vertices + 4 * faces > bytes))
+    int32(); // edges
+    if(!in)
+      return;
+    if(vertices < 0 || faces < 0 || 12 * vertices + 4 * faces > bytes)
       throw too_large(vertices, faces);
+    // faces as CGAL reads them: a size, then that many indices (walked for plain vertices only:
+    // 3 or 4 floats; with normals, colours or textures the vertex size is CGAL's business)
+    if(keyword != "OFF" && keyword != "4OFF")
+      return;
+    if(!in.seekg(static_cast<std::streamoff>(vertices * (keyword == "OFF" ? 12 : 16)), std::ios::cur))
+      return;
+    for(long long f = 0; f < faces; ++f)
+    {
+      const long long size = int32();
+      if(!in)
+        return;
+      if(size < 0 || 4 * size > bytes)
+        throw Input_error("face " + std::to_string(f) + " of '" + path + "' declares " + std::to_string(size) +
+                          " vertices, more than its " + std::to_string(bytes) + " bytes can hold");
+      if(!in.seekg(static_cast<std::streamoff>(4 * size), std::ios::cur))
+        return;
+    }
     return;
   }
 
