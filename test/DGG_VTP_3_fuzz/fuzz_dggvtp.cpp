@@ -1,0 +1,190 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+// libFuzzer target: bytes as a mesh file, read by the loader of dggvtp, then the exact
+// propagation and one DGG-VTP run (accuracy 1e-4), as the command-line program does them.
+//
+// The first byte chooses how the rest is read:
+//   bits 0-1  the file's extension: .off, .ply, .obj, .stl
+//   bit  2    the number type: double (Epick) or float (Simple_cartesian<float>)
+//   bits 3-7  the source: that file vertex, modulo the number of vertices
+// The remaining bytes are the file.
+//
+// Allowed outcomes are those of dggvtp's input policy: dggvtp::Input_error (exit status 2) or the
+// library's std::invalid_argument (its documented preconditions), or distances. Everything else
+// aborts, so that libFuzzer keeps the input: another exception (it would reach the user as an
+// unexplained `error:`), a NaN or negative distance, a source not at 0, a vertex reached by one
+// mode and not by the other. With DGG_VTP_3_FUZZ_CONTRACT=1 in the environment, a DGG-VTP
+// distance outside [exact, (1 + 1e-4) exact] aborts too (off by default: this tests accuracy,
+// not robustness).
+
+#include <dggvtp/load_mesh.h>
+
+#include <CGAL/DGG_VTP_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+[[noreturn]] void fail(const std::string& what)
+{
+  std::fprintf(stderr, "fuzz_dggvtp: %s\n", what.c_str());
+  std::abort();
+}
+
+// distances per file vertex, the smallest over the copies that loading made (as dggvtp does)
+template <class Kernel>
+std::vector<double> file_distances(const dggvtp::Loaded_soup& soup,
+                                   const CGAL::Surface_mesh<typename Kernel::Point_3>& mesh,
+                                   const CGAL::DGG_VTP_3::Geodesic_distance_solver<
+                                     CGAL::Surface_mesh<typename Kernel::Point_3>>& solver,
+                                   std::size_t source, double accuracy)
+{
+  using Mesh = CGAL::Surface_mesh<typename Kernel::Point_3>;
+  std::vector<typename Mesh::Vertex_index> sources;
+  for(std::size_t i = 0; i < soup.file_vertex_of.size(); ++i)
+    if(soup.file_vertex_of[i] == source)
+      sources.push_back(typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(i)));
+  std::vector<typename Kernel::FT> d(num_vertices(mesh));
+  solver.compute_distances_to_nearest_source(sources, CGAL::make_property_map(d),
+                                             CGAL::parameters::accuracy(accuracy));
+  std::vector<double> out(soup.file_vertices, std::numeric_limits<double>::infinity());
+  for(std::size_t i = 0; i < d.size(); ++i)
+  {
+    const double di = double(d[i]);
+    if(std::isnan(di))
+      fail("NaN distance at mesh vertex " + std::to_string(i) + " (accuracy " + std::to_string(accuracy) + ")");
+    if(di < 0.)
+      fail("negative distance at mesh vertex " + std::to_string(i));
+    double& o = out[soup.file_vertex_of[i]];
+    o = (std::min)(o, di);
+  }
+  if(out[source] != 0.)
+    fail("the source is at " + std::to_string(out[source]) + ", not 0");
+  return out;
+}
+
+// The largest ratio, over the faces, of the longest edge to the height on it (1 / 0 = inf).
+//
+// KNOWN ISSUE, excluded here so that the fuzzer explores the rest: on a closed, thin tube made of
+// needle faces (known_hangs/needle_tube.obj: a tetrahedron 1 long and 1e-12 wide), windows wrap
+// around the tube about length / circumference times before the ICH rule prunes them: about
+// 1e5 windows at a width of 1e-4, 2.4e8 (7 s) at 1e-10, hours at 1e-12. Not a loop, but a hang for
+// the user; the fix belongs in internal/Window_propagation.h. The same runaway shows on single
+// needles at extreme coordinates (known_hangs/needle_at_1e38.stl: two faces, aspect 4e6,
+// coordinates up to 3e38, 1.4e7 windows). Window counts grow about like the aspect ratio, so
+// meshes whose faces are more than 1e5 times longer than high are loaded and prepared, not
+// propagated (a run must stay far below libFuzzer's timeout under ASan + UBSan).
+template <class Mesh>
+double largest_aspect_ratio(const Mesh& mesh)
+{
+  double worst = 0.;
+  for(auto f : faces(mesh))
+  {
+    const auto h = halfedge(f, mesh);
+    const auto& a = mesh.point(source(h, mesh));
+    const auto& b = mesh.point(target(h, mesh));
+    const auto& c = mesh.point(target(next(h, mesh), mesh));
+    const double ab[3] = {double(b.x()) - double(a.x()), double(b.y()) - double(a.y()), double(b.z()) - double(a.z())};
+    const double ac[3] = {double(c.x()) - double(a.x()), double(c.y()) - double(a.y()), double(c.z()) - double(a.z())};
+    const double bc[3] = {ac[0] - ab[0], ac[1] - ab[1], ac[2] - ab[2]};
+    const double n[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
+    const double twice_area = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    double longest2 = 0.;
+    for(const double* e : {ab, ac, bc})
+      longest2 = (std::max)(longest2, e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    // longest / height = longest^2 / (2 area)
+    worst = (std::max)(worst, twice_area > 0. ? longest2 / twice_area : std::numeric_limits<double>::infinity());
+  }
+  return worst;
+}
+
+template <class Kernel>
+void run(dggvtp::Loaded_soup& soup, std::size_t source)
+{
+  using Mesh = CGAL::Surface_mesh<typename Kernel::Point_3>;
+  const Mesh mesh = dggvtp::make_triangle_mesh<Kernel>(soup);
+  const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
+  if(!(largest_aspect_ratio(mesh) <= 1e5)) // the known issue above
+    return;
+  const std::vector<double> exact = file_distances<Kernel>(soup, mesh, solver, source, 0.);
+  const std::vector<double> approx = file_distances<Kernel>(soup, mesh, solver, source, 1e-4);
+  static const bool check_contract = [] {
+    const char* e = std::getenv("DGG_VTP_3_FUZZ_CONTRACT");
+    return e != nullptr && std::string(e) == "1";
+  }();
+  for(std::size_t i = 0; i < exact.size(); ++i)
+  {
+    if(std::isinf(exact[i]) != std::isinf(approx[i]))
+      fail("vertex " + std::to_string(i) + ": exact " + std::to_string(exact[i]) + ", DGG-VTP " +
+           std::to_string(approx[i]));
+    const double slack = 1e-5 * exact[i] + 1e-12;  // float results are rounded to 6e-8
+    if(check_contract && std::isfinite(exact[i]) &&
+       (approx[i] < exact[i] - slack || approx[i] > exact[i] * (1. + 1e-4) + slack))
+      fail("vertex " + std::to_string(i) + ": DGG-VTP " + std::to_string(approx[i]) +
+           " is not within 1e-4 of exact " + std::to_string(exact[i]));
+  }
+}
+
+std::string input_path(const char* extension)
+{
+  const char* tmp = std::getenv("TMPDIR");
+  return std::string(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp") + "/fuzz_dggvtp_" +
+         std::to_string(::getpid()) + extension;
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  if(size < 1)
+    return 0;
+  static const char* const extensions[] = {".off", ".ply", ".obj", ".stl"};
+  const unsigned selector = data[0];
+  const std::string path = input_path(extensions[selector & 3u]);
+  {
+    std::FILE* file = std::fopen(path.c_str(), "wb");
+    if(file == nullptr)
+      fail("cannot write " + path);
+    if(size > 1 && std::fwrite(data + 1, 1, size - 1, file) != size - 1)
+      fail("cannot write " + path);
+    std::fclose(file);
+  }
+  try
+  {
+    dggvtp::Loaded_soup soup = dggvtp::load_soup(path);
+    std::remove(path.c_str());
+    const std::size_t source = (selector >> 3) % soup.file_vertices;
+    if(selector & 4u)
+      run<CGAL::Simple_cartesian<float>>(soup, source);
+    else
+      run<CGAL::Exact_predicates_inexact_constructions_kernel>(soup, source);
+  }
+  catch(const dggvtp::Input_error&)
+  {
+  }
+  catch(const std::invalid_argument&)
+  {
+  }
+  catch(const std::exception& e)
+  {
+    fail(std::string("unexpected exception: ") + e.what());
+  }
+  std::remove(path.c_str());
+  return 0;
+}
