@@ -233,6 +233,10 @@ case $case in
     run "$work/c.off" --output "$work/d.txt"; expect_input_error
     printf 'COFF\n3 1 0\n0 0 0 1e300 0 0\n1 0 0 1 1 1\n0 1 0 1 1 1\n3 0 1 2\n' | input c.off
     run "$work/c.off" --output "$work/d.txt"; expect_input_error
+    printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n1e30 0 1 2\n' | input s.off        # face size beyond long long
+    run "$work/s.off" --output "$work/d.txt"; expect_input_error
+    printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n1e58 0 1 2\n' | input s.ply
+    run "$work/s.ply" --output "$work/d.txt"; expect_input_error
     # colours CGAL reads are fine
     printf 'COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 0.5 0.5 0.5\n0 1 0 1 2 3\n3 0 1 2 1 1 1\n' | input ok.off
     run "$work/ok.off" --quiet --output "$work/d.txt"; expect_rc 0

@@ -222,9 +222,11 @@ inline void check_off_declarations(const std::string& path)
       return;
     const double size = entries[0];
     if(!(size >= 0.) || size != std::floor(size) || size > double(entries.size() - 1))
-      throw Input_error("face " + std::to_string(f) + " of '" + path + "' does not list the " +
-                        (std::isfinite(size) ? std::to_string(static_cast<long long>(size)) : std::string("?")) +
-                        " vertex indices it declares");
+    {
+      std::ostringstream what;
+      what << "face " << f << " of '" << path << "' does not list the " << size << " vertex indices it declares";
+      throw Input_error(what.str());
+    }
     for(std::size_t k = 1; k <= std::size_t(size); ++k)
       if(!(entries[k] >= 0.) || !(entries[k] < double(vertices)) || entries[k] != std::floor(entries[k]))
       {
@@ -335,10 +337,12 @@ inline void check_ply_declarations(const std::string& path)
   const bool big_endian = format == "binary_big_endian";
   if(!ascii && !big_endian && format != "binary_little_endian")
     return;
-  const auto list_too_large = [&](const Element& e, long long record, long long size) {
-    return Input_error("'" + path + "': element " + std::to_string(record) + " of '" + e.name + "' declares a list of " +
-                       std::to_string(size) + " entries, " +
-                       (size < 0 ? std::string("a negative size") : "more than the file's " + std::to_string(bytes) + " bytes can hold"));
+  const auto list_too_large = [&](const Element& e, long long record, double size) {
+    std::ostringstream what;
+    what << "'" << path << "': element " << record << " of '" << e.name << "' declares a list of " << size
+         << " entries, " << (size < 0. ? std::string("a negative size")
+                                       : "more than the file's " + std::to_string(bytes) + " bytes can hold");
+    return Input_error(what.str());
   };
   std::string token;
   for(const Element& e : elements)
@@ -378,7 +382,7 @@ inline void check_ply_declarations(const std::string& path)
           if(!(in >> value))
             return;
           if(!(value >= 0.) || value > double(bytes))
-            throw list_too_large(e, r, std::isfinite(value) ? static_cast<long long>(value) : -1);
+            throw list_too_large(e, r, value);
           size = static_cast<long long>(value);
           for(long long k = 0; k < size; ++k)
             if(!(in >> token))
@@ -393,9 +397,9 @@ inline void check_ply_declarations(const std::string& path)
           for(int k = 0; k < p.count_size; ++k)
             u |= std::uint64_t(b[big_endian ? p.count_size - 1 - k : k]) << (8 * k);
           if(p.count_signed && (u >> (8 * p.count_size - 1)) != 0)
-            throw list_too_large(e, r, static_cast<long long>(u) - (1LL << (8 * p.count_size)));
+            throw list_too_large(e, r, double(static_cast<long long>(u) - (1LL << (8 * p.count_size))));
           if(u > std::uint64_t(bytes))
-            throw list_too_large(e, r, static_cast<long long>(u));
+            throw list_too_large(e, r, double(u));
           size = static_cast<long long>(u);
           if(!in.seekg(static_cast<std::streamoff>(size * p.size), std::ios::cur))
             return;
