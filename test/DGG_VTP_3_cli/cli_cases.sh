@@ -225,7 +225,10 @@ case $case in
     done ;;
   ply_property_before_element)  # found by the fuzzer: CGAL's reader crashed on it
     printf 'ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n' | input p.ply
-    run "$work/p.ply" --output "$work/d.txt"; expect_input_error ;;
+    run "$work/p.ply" --output "$work/d.txt"; expect_input_error
+    # and on a coordinate of another type than float or double
+    printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty uint8 y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' | input y.ply
+    run "$work/y.ply" --output "$work/d.txt"; expect_input_error ;;
   off_numbers_cgal_cannot_convert)  # found by the fuzzer: CGAL converts them to integers unchecked
     printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 6e77\n' | input i.off        # index beyond size_t
     run "$work/i.off" --output "$work/d.txt"; expect_input_error

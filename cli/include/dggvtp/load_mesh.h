@@ -242,10 +242,11 @@ inline void check_off_declarations(const std::string& path)
 // CGAL's PLY reader allocates each list (a face's vertex indices) at the size it declares before
 // reading it, and iterates over each element as many times as the header says, even an element
 // without properties: a file of a few bytes could claim gigabytes, a negative size, or keep the
-// reader busy for ever; and a property declared before any element makes it write through
-// `back()` of an empty vector (a segmentation fault). Refused here first: properties must follow
-// an element, an element's count and a list's size must fit in the file's bytes (lists are
-// walked in the text and binary formats alike).
+// reader busy for ever; a property declared before any element makes it write through `back()`
+// of an empty vector, and a vertex coordinate that is not float or double makes it call through a
+// null pointer (segmentation faults, both). Refused here first: properties must follow an
+// element, coordinates must be float or double, an element's count and a list's size must fit in
+// the file's bytes (lists are walked in the text and binary formats alike).
 inline void check_ply_declarations(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -258,6 +259,8 @@ inline void check_ply_declarations(const std::string& path)
 
   struct Property
   {
+    std::string name;
+    std::string type;   // "list" for a list
     int size = 0;       // bytes of the value (of each entry, for a list)
     int count_size = 0; // bytes of a list's size; 0 for a scalar
     bool count_signed = false;
@@ -316,22 +319,40 @@ inline void check_ply_declarations(const std::string& path)
       std::string type, count_type, item_type;
       words >> type;
       Property p;
+      p.type = type;
       bool is_signed = false;
       if(type == "list")
       {
-        words >> count_type >> item_type;
+        words >> count_type >> item_type >> p.name;
         p.count_size = type_size(count_type, p.count_signed);
         p.size = type_size(item_type, is_signed);
         if(p.count_size == 0 || count_type.compare(0, 5, "float") == 0 || count_type == "double")
           return; // an unknown or floating-point size type: left to CGAL's reader
       }
       else
+      {
         p.size = type_size(type, is_signed);
+        words >> p.name;
+      }
       if(p.size == 0)
         return; // an unknown type: CGAL's reader says so
       elements.back().properties.push_back(p);
     }
   }
+
+  // CGAL reads a point's x, y and z (the first property of each name) as float or double, and
+  // dereferences a null pointer when they are something else
+  for(const Element& e : elements)
+    if(e.name == "vertex" || e.name == "vertices")
+      for(const char* coordinate : {"x", "y", "z"})
+        for(const Property& p : e.properties)
+          if(p.name == coordinate)
+          {
+            if(p.type != "float" && p.type != "float32" && p.type != "double" && p.type != "float64")
+              throw Input_error("'" + path + "': the vertex coordinate " + coordinate + " is of type " + p.type +
+                                "; only float and double coordinates are read");
+            break;
+          }
 
   const bool ascii = format == "ascii";
   const bool big_endian = format == "binary_big_endian";
