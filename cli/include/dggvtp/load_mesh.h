@@ -246,7 +246,8 @@ inline void check_off_declarations(const std::string& path)
 // of an empty vector, and a vertex coordinate that is not float or double makes it call through a
 // null pointer (segmentation faults, both). Refused here first: properties must follow an
 // element, coordinates must be float or double, an element's count and a list's size must fit in
-// the file's bytes (lists are walked in the text and binary formats alike).
+// the file's bytes (lists are walked in the text and binary formats alike), and every type must be
+// one of PLY's.
 inline void check_ply_declarations(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -327,15 +328,15 @@ inline void check_ply_declarations(const std::string& path)
         p.count_size = type_size(count_type, p.count_signed);
         p.size = type_size(item_type, is_signed);
         if(p.count_size == 0 || count_type.compare(0, 5, "float") == 0 || count_type == "double")
-          return; // an unknown or floating-point size type: left to CGAL's reader
+          throw Input_error("'" + path + "': the PLY list '" + p.name + "' has a size type that is not an integer type");
       }
       else
       {
         p.size = type_size(type, is_signed);
         words >> p.name;
       }
-      if(p.size == 0)
-        return; // an unknown type: CGAL's reader says so
+      if(p.size == 0) // CGAL's reader may go on with a null reader for it (fuzzer)
+        throw Input_error("'" + path + "': the PLY property '" + p.name + "' has an unknown type");
       elements.back().properties.push_back(p);
     }
   }
