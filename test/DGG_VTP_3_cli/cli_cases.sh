@@ -229,6 +229,29 @@ case $case in
     # and on a coordinate of another type than float or double
     printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty uint8 y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' | input y.ply
     run "$work/y.ply" --output "$work/d.txt"; expect_input_error ;;
+  ply_truncated_or_unterminated)  # found by the fuzzer: CGAL read a list size from the end of the file
+    # (an uninitialised value) and allocated it: a header without end_header, data ending early
+    printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty list int16 int8 vertex_indices\nend_head\n0 0 0\n' | input h.ply
+    run "$work/h.ply" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *end_header* ]] || fail "no end_header: $err"
+    header='ply\nformat %s 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 2\nproperty list int int vertex_indices\nend_header\n'
+    printf "$header"'0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' ascii | input a.ply
+    run "$work/a.ply" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *truncated* ]] || fail "ascii: $err"
+    { printf "$header" binary_little_endian
+      printf '\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0'
+      printf '\3\0\0\0\0\0\0\0\1\0\0\0\2\0\0\0'; } > "$work/b.ply"
+    run "$work/b.ply" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *truncated* ]] || fail "binary: $err"
+    # the header as CGAL reads it: "ply" after blanks, any first word on the format line
+    printf ' ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n' | input s.ply
+    run "$work/s.ply" --output "$work/d.txt"; expect_input_error
+    printf "$header"'0 0 0\n1 0 0\n0 1 0\n-5 0 1 2\n3 0 1 2\n' ascii | sed 2s/format/f/ | input f.ply
+    run "$work/f.ply" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *negative* ]] || fail "format line: $err"
+    printf "$header"'0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n' ascii | input ok.ply
+    run "$work/ok.ply" --quiet --output "$work/d.txt"; expect_rc 0
+    expect_lines "$work/d.txt" 0 1 1 ;;
   off_numbers_cgal_cannot_convert)  # found by the fuzzer: CGAL converts them to integers unchecked
     printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 6e77\n' | input i.off        # index beyond size_t
     run "$work/i.off" --output "$work/d.txt"; expect_input_error
@@ -244,6 +267,61 @@ case $case in
     printf 'COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 0.5 0.5 0.5\n0 1 0 1 2 3\n3 0 1 2 1 1 1\n' | input ok.off
     run "$work/ok.off" --quiet --output "$work/d.txt"; expect_rc 0
     expect_lines "$work/d.txt" 0 1 1 ;;
+  off_header_variants)  # found by the fuzzer: CGAL's reader indexed an ST OFF's texture coordinates with uninitialised members
+    tri='0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n'
+    # refused: texture coordinates (ST), binary colours, a dimension other than 3, a skeleton
+    printf 'STOFF\n6 6 0\n0 0 5\n1 0 0\n2 0 1\n 1 0\n1 1 0\n2 1 -1\n3 0 2 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 2 3 0\n3 2 0 1\n' | input st.off
+    run "$work/st.off" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *texture* ]] || fail "STOFF: $err"
+    for header in 'STOFF\n3 1 0\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n' 'STCOFF\n3 1 0\n0 0 0 0 0 255 0 0\n1 0 0 1 0 255 0 0\n0 1 0 0 1 255 0 0\n' \
+                  'ST4OFF\n3 1 0\n0 0 0 1 0 0 1\n1 0 0 1 1 0 1\n0 1 0 1 0 1 1\n' 'nOFF\n4\n3 1 0\n0 0 0 0\n1 0 0 0\n0 1 0 0\n' \
+                  'SKEL\n100000000 0\n'; do
+      printf "$header"'3 0 1 2\n' | input v.off
+      run "$work/v.off" --output "$work/d.txt"; expect_input_error
+    done
+    printf 'COFF BINARY\n\0\0\0\3\0\0\0\1\0\0\0\0' | input b.off
+    run "$work/b.off" --output "$work/d.txt"; expect_input_error
+    # read: the variants CGAL reads safely (normals, homogeneous coordinates, colours, dimension 3)
+    for header in 'NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n' '4OFF\n3 1 0\n0 0 0 1\n2 0 0 2\n0 1 0 1\n' \
+                  'CNOFF\n3 1 0\n0 0 0 0 0 1 1\n1 0 0 0 0 1 2\n0 1 0 0 0 1 3\n' 'nOFF\n3\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n'; do
+      printf "$header"'3 0 1 2\n' | input v.off
+      run "$work/v.off" --quiet --output "$work/d.txt"; expect_rc 0
+      expect_lines "$work/d.txt" 0 1 1; rm "$work/d.txt"
+    done
+    # ... but not with normals missing, nor a face of -1 vertices in binary NOFF (CGAL: size_t(-1))
+    printf 'NOFF\n3 1 0\n'"$tri" | input v.off
+    run "$work/v.off" --output "$work/d.txt"; expect_input_error
+    for size in '\0\0\0\3' '\xff\xff\xff\xff'; do
+      { printf 'NOFF BINARY\n\0\0\0\3\0\0\0\1\0\0\0\0'
+        for vertex in '\0\0\0\0\0\0\0\0\0\0\0\0' '\x3f\x80\0\0\0\0\0\0\0\0\0\0' '\0\0\0\0\x3f\x80\0\0\0\0\0\0'; do
+          printf "$vertex"'\0\0\0\0\0\0\0\0\x3f\x80\0\0'   # the point, then the normal (0, 0, 1)
+        done
+        printf "$size"'\0\0\0\0\0\0\0\1\0\0\0\2'; } > "$work/b.off"
+      run "$work/b.off" --quiet --output "$work/d.txt"
+      if [ "$size" = '\0\0\0\3' ]; then expect_rc 0; expect_lines "$work/d.txt" 0 1 1; rm "$work/d.txt"
+      else expect_input_error; fi
+    done ;;
+  off_edge_count_overflow)  # found by the fuzzer: CGAL's OFF header reader doubles the edge count in int
+    printf 'OFF\n3 1 1500000000\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' | input e.off
+    run "$work/e.off" --output "$work/d.txt"; expect_input_error
+    printf 'OFF BINARY\n\0\0\0\0\0\0\0\0\x6f\x6f\x90\x0a' | input b.off
+    run "$work/b.off" --output "$work/d.txt"; expect_input_error
+    printf 'OFF\n3 1 3\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' | input ok.off   # a true edge count is fine
+    run "$work/ok.off" --quiet --output "$work/d.txt"; expect_rc 0
+    expect_lines "$work/d.txt" 0 1 1 ;;
+  truncated_off_records)  # found by the fuzzer: CGAL read the missing record's colour out of bounds
+    printf 'CNOFF\n4 4 0\n0 0 0 0 0 1\n' | input v.off                          # a vertex missing
+    run "$work/v.off" --output "$work/d.txt"; expect_input_error
+    printf 'COFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n' | input f.off  # a face missing
+    run "$work/f.off" --output "$work/d.txt"; expect_input_error
+    printf 'COFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\nx' | input g.off # a face without numbers
+    run "$work/g.off" --output "$work/d.txt"; expect_input_error
+    # binary: CGAL would take an uninitialised face size and allocate it
+    { printf 'OFF BINARY\n\0\0\0\3\0\0\0\2\0\0\0\0'
+      printf '\0\0\0\0\0\0\0\0\0\0\0\0\x3f\x80\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x3f\x80\0\0\0\0\0\0'
+      printf '\0\0\0\3\0\0\0\0\0\0\0\1\0\0\0\2'; } > "$work/b.off"
+    run "$work/b.off" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *truncated* ]] || fail "binary: $err" ;;
   truncated_binary_stl)  # the count says 1000 triangles, the file holds one
     binary_stl t.stl 1000 $f0 $f0 $f0 $f1 $f0 $f0 $f0 $f1 $f0
     run "$work/t.stl" --output "$work/d.txt"; expect_input_error ;;
@@ -277,6 +355,24 @@ case $case in
     printf 'OFF\n8 1 0\n0 0 0\n1 0 0\n2 0 0\n2 1 0\n2 2 0\n1 2 0\n0 2 0\n0 1 0\n8 0 1 2 3 4 5 6 7\n' | input c.off
     run "$work/c.off" --output "$work/d.txt"; expect_warning triangulated
     expect_lines "$work/d.txt" 0 1 2 2.23606797749979 2.8284271247461903 2.23606797749979 2 1 ;;
+  polygon_touching_itself)  # found by the fuzzer: CGAL's triangulate_faces crashed on it (segfault)
+    # a pentagon whose last two vertices are at the same place, its sides crossing seen along its normal
+    printf 'OFF\n5 1 0\n1 4 3\n0 1e-12 0\n0 0 0\n1e-12 1 0\n1e-12 1 0\n5 0 1 2 3 4\n' | input p.off
+    for precision in double float; do
+      run "$work/p.off" --precision $precision --output "$work/d.txt"; expect_input_error
+    done
+    # a bow tie (two sides crossing) and a polygon touching itself at a vertex
+    for polygon in '5 1 0\n0 0 0\n2 1 0\n2 0 0\n0 1 0\n-1 0.5 0\n5 0 1 2 3 4' \
+                   '6 1 0\n0 0 0\n2 0 0\n1 1 0\n2 2 0\n0 2 0\n1 1 0\n6 0 1 2 3 4 5'; do
+      printf "OFF\n$polygon\n" | input x.off
+      run "$work/x.off" --output "$work/d.txt"; expect_input_error
+    done
+    # a non-convex polygon with collinear sides, and a non-planar hexagon: triangulated
+    printf 'OFF\n7 1 0\n0 0 0\n1 0 0\n2 0 0\n2 2 0\n1 1 0\n0 2 0\n0 1 0\n7 0 1 2 3 4 5 6\n' | input v.off
+    run "$work/v.off" --quiet --output "$work/d.txt"; expect_rc 0
+    expect_lines "$work/d.txt" 0 1 2 2.8284271247461903 1.4142135623730951 2 1
+    printf 'OFF\n6 1 0\n1 0 0\n0.5 0.8 0.1\n-0.5 0.8 -0.1\n-1 0 0.1\n-0.5 -0.8 -0.1\n0.5 -0.8 0.1\n6 0 1 2 3 4 5\n' | input h.off
+    run "$work/h.off" --quiet --precision float --output "$work/d.txt"; expect_rc 0 ;;
   # coordinates
   inf_coordinate)
     printf 'OFF\n3 1 0\n0 0 0\ninf 0 0\n0 1 0\n3 0 1 2\n' | input i.off

@@ -11,7 +11,6 @@
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -74,7 +73,18 @@ struct Repair_visitor : CGAL::Polygon_mesh_processing::Default_orientation_visit
 // size_t unchecked: a file of a few bytes could claim gigabytes, or a negative index. Such files
 // are refused here, before CGAL reads them: declared counts must fit in the file's bytes, and a
 // face line must list as many vertex indices as it declares, each in [0, vertices). In binary
-// OFF, the face sizes are checked when the vertices are plain points.
+// OFF, the face sizes are walked too.
+//
+// Of the header's variants ([ST][C][N][4][n]OFF, as CGAL 5.5 parses the keyword), those CGAL
+// cannot read safely or correctly are refused outright:
+// - ST (texture coordinates): in text, File_scanner_OFF::scan_texture indexes the line's numbers
+//   with members that only a C in the keyword initialises (without it: an uninitialised index, a
+//   read anywhere in memory; found by the fuzzer), and with C it does not check the bounds;
+// - C in binary OFF: CGAL does not read the colours there, it reads them as the next vertices;
+// - n with a dimension other than 3: CGAL reads 3 coordinates a vertex whatever it says;
+// - SKEL (a skeleton, lines and points, not a surface), which none of these checks cover.
+// Plain, C (text), N and 4 variants are kept: CGAL bounds-checks normals and homogeneous
+// coordinates, and colours are checked below.
 inline void check_off_declarations(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -104,22 +114,64 @@ inline void check_off_declarations(const std::string& path)
                        std::to_string(faces) + " faces, more than its " + std::to_string(bytes) +
                        " bytes can hold");
   };
+  // CGAL's header reader estimates the number of halfedges in int arithmetic, as 2 * edges, or
+  // as 2.1 * (vertices + faces + 10) converted to int: it overflows (fuzzer: signed overflow)
+  // beyond these counts
+  const auto check_countable = [&](long long vertices, long long faces, long long edges) {
+    if(edges > std::numeric_limits<int>::max() / 2 || edges < std::numeric_limits<int>::min() / 2 ||
+       vertices + faces > 1000000000)
+      throw Input_error("'" + path + "' declares " + std::to_string(vertices) + " vertices, " +
+                        std::to_string(faces) + " faces and " + std::to_string(edges) +
+                        " edges, more than CGAL's OFF reader can count");
+  };
+  // A missing record (the file ends early) or a face line without numbers: CGAL reads on, in text
+  // to the colour of the record before, out of the bounds of this one's numbers (fuzzer: heap
+  // overflow in File_scanner_OFF::scan_color on a truncated CNOFF), in binary an uninitialised face
+  // size, which it allocates; refused here for every variant.
+  const auto truncated = [&](const std::string& record, long long index, long long count) {
+    return Input_error("'" + path + "' is truncated or damaged: " + record + " " + std::to_string(index) + " of " +
+                       std::to_string(count) + " is missing");
+  };
 
   skip_comments();
   const std::string keyword = read_word();
   in.get(); // CGAL's reader takes the character that ends the keyword, whatever it is
-  if(keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
+  // the keyword's prefixes, in CGAL's order
+  std::size_t j = 0;
+  const auto prefix = [&](const char* letters) {
+    const std::size_t n = std::strlen(letters);
+    if(keyword.compare(j, n, letters) != 0)
+      return false;
+    j += n;
+    return true;
+  };
+  const bool textures = prefix("ST");
+  const bool colours = prefix("C");
+  const bool normals = prefix("N");
+  const int homogeneous = prefix("4") ? 1 : 0;
+  const bool dimensional = prefix("n");
+  const std::string format = keyword.substr(j);
+  if(format == "SKEL")
+    throw Input_error("'" + path + "' is a skeleton (" + keyword + " header), not a surface mesh");
+  if(format != "OFF")
     return; // not a header CGAL reads as OFF: it says so
-  const bool dimensional = keyword.find('n') != std::string::npos;
-  const bool colours = keyword.find('C') != std::string::npos;
-  const int homogeneous = keyword.find('4') != std::string::npos ? 1 : 0;
-  const bool normals = keyword.find('N') != std::string::npos;
-  const bool textures = keyword.compare(0, 2, "ST") == 0;
+  if(textures)
+    throw Input_error("'" + path + "' has texture coordinates (" + keyword +
+                      " header), which CGAL's OFF reader cannot read safely: remove them and the ST");
   skip_comments();
-  if(std::isalpha(in.peek()))
+  const bool binary = std::isalpha(in.peek()) != 0;
+  if(binary && read_word() != "BINARY")
+    return;
+  if(binary && colours)
+    throw Input_error("'" + path + "' is a binary OFF file with colours (" + keyword +
+                      " BINARY), which CGAL's OFF reader reads as coordinates");
+  const auto check_dimension = [&](long long dimension) {
+    if(dimensional && dimension != 3)
+      throw Input_error("'" + path + "' declares " + std::to_string(dimension) +
+                        " dimensions (" + keyword + " header); only 3 are read");
+  };
+  if(binary)
   {
-    if(read_word() != "BINARY")
-      return;
     if(in.get() != '\n')
       in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
     const auto int32 = [&in] {
@@ -129,24 +181,28 @@ inline void check_off_declarations(const std::string& path)
                                        (std::uint32_t(b[2]) << 8) | std::uint32_t(b[3]));
     };
     if(dimensional)
-      int32();
-    const long long vertices = int32(), faces = int32();
-    int32(); // edges
+    {
+      const long long dimension = int32();
+      if(!in)
+        return;
+      check_dimension(dimension);
+    }
+    const long long vertices = int32(), faces = int32(), edges = int32();
     if(!in)
       return;
     if(vertices < 0 || faces < 0 || 12 * vertices + 4 * faces > bytes)
       throw too_large(vertices, faces);
-    // faces as CGAL reads them: a size, then that many indices (walked for plain vertices only:
-    // 3 or 4 floats; with normals, colours or textures the vertex size is CGAL's business)
-    if(keyword != "OFF" && keyword != "4OFF")
-      return;
-    if(!in.seekg(static_cast<std::streamoff>(vertices * (keyword == "OFF" ? 12 : 16)), std::ios::cur))
+    check_countable(vertices, faces, edges);
+    // faces as CGAL reads them: a size, then that many indices, after the vertices: 3 or 4 floats,
+    // twice that with normals (no colours: refused above)
+    const long long vertex_bytes = 4 * (3 + homogeneous) * (normals ? 2 : 1);
+    if(!in.seekg(static_cast<std::streamoff>(vertices * vertex_bytes), std::ios::cur))
       return;
     for(long long f = 0; f < faces; ++f)
     {
       const long long size = int32();
       if(!in)
-        return;
+        throw truncated("face", f, faces);
       if(size < 0 || 4 * size > bytes)
         throw Input_error("face " + std::to_string(f) + " of '" + path + "' declares " + std::to_string(size) +
                           " vertices, more than its " + std::to_string(bytes) + " bytes can hold");
@@ -158,13 +214,19 @@ inline void check_off_declarations(const std::string& path)
 
   long long vertices = -1, faces = -1, edges = 0;
   if(dimensional)
-    in >> vertices; // the dimension
+  {
+    long long dimension = 0;
+    if(!(in >> dimension))
+      return;
+    check_dimension(dimension);
+  }
   in >> vertices >> faces >> edges;
   if(!in)
     return;
   // a vertex line takes at least 5 bytes ("0 0 0"), a face line at least 1
   if(vertices < 0 || faces < 0 || vertices > bytes || faces > bytes || 5 * vertices + faces > bytes)
     throw too_large(vertices, faces);
+  check_countable(vertices, faces, edges);
 
   // the body as CGAL reads it: one line a record, after blank and comment lines
   std::string line;
@@ -176,11 +238,11 @@ inline void check_off_declarations(const std::string& path)
     std::istringstream numbers(line.substr(0, line.find('#')));
     entries.clear();
     double entry;
-    while(numbers >> entry)
+    while(numbers >> CGAL::IO::iformat(entry)) // as CGAL parses them
       entries.push_back(entry);
     return true;
   };
-  // With a C in the keyword, CGAL takes what follows the coordinates (normals, texture) or the
+  // With a C in the keyword, CGAL takes what follows the coordinates (and normals) or the
   // indices as a colour: 1 entry, an index into a table of 149 colours, or 3 (or 4) components,
   // converted to unsigned char. Other counts make it read past the line's numbers, other values
   // past the table or outside unsigned char: refused, with every record alike since CGAL decides
@@ -208,18 +270,15 @@ inline void check_off_declarations(const std::string& path)
   for(long long v = 0; v < vertices; ++v)
   {
     if(!read_entries())
-      return;
+      throw truncated("vertex", v, vertices);
     if(colours)
-      check_colour((3 + homogeneous) * (normals ? 2 : 1) + (textures ? 2 + homogeneous : 0),
-                   "vertex " + std::to_string(v));
+      check_colour((3 + homogeneous) * (normals ? 2 : 1), "vertex " + std::to_string(v));
   }
   colour_entries_seen = -1;
   for(long long f = 0; f < faces; ++f)
   {
-    if(!read_entries())
-      return;
-    if(entries.empty())
-      return;
+    if(!read_entries() || entries.empty())
+      throw truncated("face", f, faces);
     const double size = entries[0];
     if(!(size >= 0.) || size != std::floor(size) || size > double(entries.size() - 1))
     {
@@ -286,24 +345,26 @@ inline void check_ply_declarations(const std::string& path)
     return 0;
   };
 
-  std::string line, format;
+  // the header as CGAL reads it: "ply" as the first word of line 1, the format as the second word
+  // of line 2 (whatever the first), then a keyword a line; without an end_header line CGAL goes
+  // on reading the elements from the end of the file, where a list size is an uninitialised
+  // value it allocates (fuzzer: std::length_error)
+  std::string line, word, format;
   std::vector<Element> elements;
-  if(!std::getline(in, line) || line.compare(0, 3, "ply") != 0)
+  if(!std::getline(in, line) || !(std::istringstream(line) >> word) || word != "ply")
+    return;
+  if(!std::getline(in, line) || !(std::istringstream(line) >> word >> format >> word))
     return;
   for(;;)
   {
     if(!std::getline(in, line))
-      return;
-    if(!line.empty() && line.back() == '\r')
-      line.pop_back();
+      throw Input_error("'" + path + "': the PLY header does not end (no end_header line)");
     std::istringstream words(line);
-    std::string word;
-    words >> word;
+    if(!(words >> word))
+      return; // CGAL's reader stops at an empty header line
     if(word == "end_header")
       break;
-    if(word == "format")
-      words >> format;
-    else if(word == "element")
+    if(word == "element")
     {
       Element e;
       if(!(words >> e.name >> e.count))
@@ -366,6 +427,12 @@ inline void check_ply_declarations(const std::string& path)
                                        : "more than the file's " + std::to_string(bytes) + " bytes can hold");
     return Input_error(what.str());
   };
+  // Where the data ends early (or a number does not read), CGAL's reader may take an uninitialised
+  // list size (it reads into an uninitialised variable once the stream has failed) and allocate
+  // it: refused, although it only matters before a list.
+  const auto truncated = [&](const Element& e) {
+    return Input_error("'" + path + "' is truncated or damaged: the elements '" + e.name + "' do not read");
+  };
   std::string token;
   for(const Element& e : elements)
   {
@@ -382,10 +449,10 @@ inline void check_ply_declarations(const std::string& path)
       {
         for(long long r = 0; r < e.count * static_cast<long long>(e.properties.size()); ++r)
           if(!(in >> token))
-            return;
+            throw truncated(e);
       }
       else if(!in.seekg(static_cast<std::streamoff>(e.count * record_size), std::ios::cur))
-        return;
+        throw truncated(e);
       continue;
     }
     for(long long r = 0; r < e.count; ++r)
@@ -394,7 +461,7 @@ inline void check_ply_declarations(const std::string& path)
         if(p.count_size == 0)
         {
           if(ascii ? !(in >> token) : !in.seekg(p.size, std::ios::cur))
-            return;
+            throw truncated(e);
           continue;
         }
         long long size = 0;
@@ -402,19 +469,19 @@ inline void check_ply_declarations(const std::string& path)
         {
           double value;
           if(!(in >> value))
-            return;
+            throw truncated(e);
           if(!(value >= 0.) || value > double(bytes))
             throw list_too_large(e, r, value);
           size = static_cast<long long>(value);
           for(long long k = 0; k < size; ++k)
             if(!(in >> token))
-              return;
+              throw truncated(e);
         }
         else
         {
           unsigned char b[8] = {0, 0, 0, 0, 0, 0, 0, 0};
           if(!in.read(reinterpret_cast<char*>(b), p.count_size))
-            return;
+            throw truncated(e);
           std::uint64_t u = 0;
           for(int k = 0; k < p.count_size; ++k)
             u |= std::uint64_t(b[big_endian ? p.count_size - 1 - k : k]) << (8 * k);
@@ -424,7 +491,7 @@ inline void check_ply_declarations(const std::string& path)
             throw list_too_large(e, r, double(u));
           size = static_cast<long long>(u);
           if(!in.seekg(static_cast<std::streamoff>(size * p.size), std::ios::cur))
-            return;
+            throw truncated(e);
         }
       }
   }
@@ -497,6 +564,136 @@ inline void orient_soup(Loaded_soup& soup)
 
 namespace internal {
 
+// Splits polygon `f` of the soup (more than 3 vertices) into triangles, appended to `triangles`
+// (same orientation); throws Input_error when it cannot. This replaces CGAL's triangulate_faces,
+// whose constrained Delaunay triangulation of the polygon, in its plane seen along an inexact
+// normal, crashes on polygons that touch or cross themselves there (fuzzer: a pentagon with two
+// vertices at the same place: where two sides crossed, computing their intersection failed and the
+// triangulation took an uninitialised point as the new vertex; with the repeated place merged, the
+// vertex count matched the polygon's and CGAL used the new vertex's halfedge, which is null; in
+// double and float alike). Here:
+// - a quad is split along the diagonal CGAL chooses (the one whose two triangles' normals agree
+//   best), computed in double;
+// - a larger polygon is projected onto the coordinate plane most parallel to it (exact: it drops
+//   one coordinate) and cut by ear clipping with exact predicates: an ear is a strictly convex
+//   corner whose triangle holds no other corner, not even on its border. A simple polygon always
+//   has one; a polygon that crosses or touches itself there may run out of ears: refused.
+inline void triangulate_polygon(const Loaded_soup& soup, std::size_t f, std::vector<std::vector<std::size_t>>& triangles)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const std::vector<std::size_t>& polygon = soup.polygons[f];
+  const std::size_t n = polygon.size();
+  const auto& p = soup.points;
+  const auto refuse = [&](const std::string& why) {
+    return Input_error("face " + std::to_string(f) + " (" + std::to_string(n) + " vertices) cannot be triangulated: " + why);
+  };
+  // Newell's normal: twice the vector area of the polygon
+  double normal[3] = {0., 0., 0.};
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const K::Point_3& a = p[polygon[i]];
+    const K::Point_3& b = p[polygon[(i + 1) % n]];
+    normal[0] += (a.y() - b.y()) * (a.z() + b.z());
+    normal[1] += (a.z() - b.z()) * (a.x() + b.x());
+    normal[2] += (a.x() - b.x()) * (a.y() + b.y());
+  }
+  if(!std::isfinite(normal[0]) || !std::isfinite(normal[1]) || !std::isfinite(normal[2]))
+    throw refuse("its coordinates are too large");
+  int axis = 0;
+  for(int c = 1; c < 3; ++c)
+    if(std::abs(normal[c]) > std::abs(normal[axis]))
+      axis = c;
+  if(normal[axis] == 0.)
+    throw refuse("it has no area");
+
+  if(n == 4)
+  {
+    const K::Point_3 &p0 = p[polygon[0]], &p1 = p[polygon[1]], &p2 = p[polygon[2]], &p3 = p[polygon[3]];
+    const double p1p3 = CGAL::cross_product(p2 - p1, p3 - p2) * CGAL::cross_product(p0 - p3, p1 - p0);
+    const double p0p2 = CGAL::cross_product(p1 - p0, p1 - p2) * CGAL::cross_product(p3 - p2, p3 - p0);
+    if(p0p2 > p1p3)
+    {
+      triangles.push_back({polygon[0], polygon[1], polygon[2]});
+      triangles.push_back({polygon[2], polygon[3], polygon[0]});
+    }
+    else
+    {
+      triangles.push_back({polygon[1], polygon[2], polygon[3]});
+      triangles.push_back({polygon[3], polygon[0], polygon[1]});
+    }
+    return;
+  }
+
+  // (y, z), (z, x) or (x, y): the polygon turns counterclockwise there if normal[axis] > 0
+  std::vector<K::Point_2> q;
+  q.reserve(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const K::Point_3& a = p[polygon[i]];
+    q.emplace_back(a[(axis + 1) % 3], a[(axis + 2) % 3]);
+  }
+  const CGAL::Orientation convex = normal[axis] > 0. ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
+  const CGAL::Orientation outside = normal[axis] > 0. ? CGAL::RIGHT_TURN : CGAL::LEFT_TURN;
+  std::vector<std::size_t> prev(n), next(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    prev[i] = (i + n - 1) % n;
+    next[i] = (i + 1) % n;
+  }
+  const auto is_ear = [&](std::size_t i) {
+    const std::size_t a = prev[i], c = next[i];
+    if(CGAL::orientation(q[a], q[i], q[c]) != convex)
+      return false;
+    for(std::size_t j = next[c]; j != a; j = next[j])
+      if(CGAL::orientation(q[a], q[i], q[j]) != outside && CGAL::orientation(q[i], q[c], q[j]) != outside &&
+         CGAL::orientation(q[c], q[a], q[j]) != outside)
+        return false;
+    return true;
+  };
+  std::size_t remaining = n, i = 0, tried = 0;
+  while(remaining > 3)
+  {
+    if(is_ear(i))
+    {
+      triangles.push_back({polygon[prev[i]], polygon[i], polygon[next[i]]});
+      next[prev[i]] = next[i];
+      prev[next[i]] = prev[i];
+      i = prev[i];
+      --remaining;
+      tried = 0;
+    }
+    else
+    {
+      i = next[i];
+      if(++tried > remaining)
+        throw refuse("it crosses or touches itself, or has two vertices at the same place");
+    }
+  }
+  if(CGAL::orientation(q[prev[i]], q[i], q[next[i]]) != convex)
+    throw refuse("it crosses or touches itself, or has two vertices at the same place");
+  triangles.push_back({polygon[prev[i]], polygon[i], polygon[next[i]]});
+}
+
+// Replaces the polygons with more than 3 vertices by triangles.
+inline void triangulate_soup(Loaded_soup& soup)
+{
+  bool any = false;
+  for(const auto& polygon : soup.polygons)
+    any = any || polygon.size() > 3;
+  if(!any)
+    return;
+  std::vector<std::vector<std::size_t>> triangles;
+  for(std::size_t f = 0; f < soup.polygons.size(); ++f)
+  {
+    if(soup.polygons[f].size() == 3)
+      triangles.push_back(soup.polygons[f]);
+    else
+      triangulate_polygon(soup, f, triangles);
+  }
+  soup.polygons.swap(triangles);
+  soup.repairs.push_back("triangulated the faces with more than 3 vertices");
+}
+
 template <class Kernel>
 CGAL::Surface_mesh<typename Kernel::Point_3> soup_to_mesh(const Loaded_soup& soup)
 {
@@ -517,6 +714,7 @@ CGAL::Surface_mesh<typename Kernel::Point_3> soup_to_mesh(const Loaded_soup& sou
 template <class Kernel>
 CGAL::Surface_mesh<typename Kernel::Point_3> make_triangle_mesh(Loaded_soup& soup)
 {
+  internal::triangulate_soup(soup);
   // A face that does not fit (inconsistent orientation, more than two faces on an edge) is left
   // out by the conversion; only then is the soup oriented, which on a clean million-face file
   // would cost ten times the rest of loading.
@@ -541,12 +739,6 @@ CGAL::Surface_mesh<typename Kernel::Point_3> make_triangle_mesh(Loaded_soup& sou
   // the mesh holds everything now: give the soup's memory back before the propagation
   std::vector<typename Loaded_soup::Point>().swap(soup.points);
   std::vector<std::vector<std::size_t>>().swap(soup.polygons);
-  if(!CGAL::is_triangle_mesh(mesh))
-  {
-    soup.repairs.push_back("triangulated the faces with more than 3 vertices");
-    if(!CGAL::Polygon_mesh_processing::triangulate_faces(mesh))
-      throw Input_error("a face with more than 3 vertices could not be triangulated");
-  }
   return mesh;
 }
 
