@@ -56,24 +56,17 @@ std::vector<double> file_distances(const dggvtp::Loaded_soup& soup,
                                    std::size_t source, double accuracy)
 {
   using Mesh = CGAL::Surface_mesh<typename Kernel::Point_3>;
-  std::vector<typename Mesh::Vertex_index> sources;
-  for(std::size_t i = 0; i < soup.file_vertex_of.size(); ++i)
-    if(soup.file_vertex_of[i] == source)
-      sources.push_back(typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(i)));
   std::vector<typename Kernel::FT> d(num_vertices(mesh));
-  solver.compute_distances_to_nearest_source(sources, CGAL::make_property_map(d),
-                                             CGAL::parameters::accuracy(accuracy));
-  std::vector<double> out(soup.file_vertices, std::numeric_limits<double>::infinity());
+  solver.compute_distances_to_nearest_source(dggvtp::mesh_vertices_of<typename Mesh::Vertex_index>(soup, source),
+                                             CGAL::make_property_map(d), CGAL::parameters::accuracy(accuracy));
   for(std::size_t i = 0; i < d.size(); ++i)
   {
-    const double di = double(d[i]);
-    if(std::isnan(di))
+    if(std::isnan(double(d[i])))
       fail("NaN distance at mesh vertex " + std::to_string(i) + " (accuracy " + std::to_string(accuracy) + ")");
-    if(di < 0.)
+    if(d[i] < 0)
       fail("negative distance at mesh vertex " + std::to_string(i));
-    double& o = out[soup.file_vertex_of[i]];
-    o = (std::min)(o, di);
   }
+  const std::vector<double> out = dggvtp::file_vertex_distances(soup, d);
   if(out[source] != 0.)
     fail("the source is at " + std::to_string(out[source]) + ", not 0");
   return out;

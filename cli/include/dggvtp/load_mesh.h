@@ -742,6 +742,32 @@ CGAL::Surface_mesh<typename Kernel::Point_3> make_triangle_mesh(Loaded_soup& sou
   return mesh;
 }
 
+// The vertices of the mesh made from `soup` that stand for its file vertex `file_vertex`: the
+// vertex itself and the copies loading made of it (a source is a source on every sheet).
+template <class VertexIndex>
+std::vector<VertexIndex> mesh_vertices_of(const Loaded_soup& soup, std::size_t file_vertex)
+{
+  std::vector<VertexIndex> out;
+  for(std::size_t i = 0; i < soup.file_vertex_of.size(); ++i)
+    if(soup.file_vertex_of[i] == file_vertex)
+      out.push_back(VertexIndex(static_cast<typename VertexIndex::size_type>(i)));
+  return out;
+}
+
+// Per file vertex, the smallest of the distances `d` (per mesh vertex) of the vertices that stand
+// for it; +infinity for a file vertex no face uses.
+template <class FT>
+std::vector<double> file_vertex_distances(const Loaded_soup& soup, const std::vector<FT>& d)
+{
+  std::vector<double> out(soup.file_vertices, std::numeric_limits<double>::infinity());
+  for(std::size_t i = 0; i < d.size(); ++i)
+  {
+    double& o = out[soup.file_vertex_of[i]];
+    o = (std::min)(o, double(d[i]));
+  }
+  return out;
+}
+
 } // namespace dggvtp
 
 #endif // DGGVTP_LOAD_MESH_H
