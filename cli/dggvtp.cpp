@@ -57,7 +57,8 @@ through it (a warning on stderr reports each of these); distances are still repo
 of the file, the smallest over the copies of a split vertex. Vertices no face uses, and vertices of other
 connected components than the source's, are unreachable: inf. An unreadable or empty file, a
 non-finite coordinate, a face with fewer than 3 or repeated vertices, a degenerate face (zero
-length edge or zero area), a polygon that cannot be triangulated (it touches or crosses itself)
+length edge or zero area), a sliver (an edge more than 1e10 times longer than the height on it),
+the tip of a cone sharper than 1e-4 radians (windows would wrap around those for hours), a polygon that cannot be triangulated (it touches or crosses itself)
 or an out-of-range source is an error: one line on stderr starting with 'error:', exit status 2,
 and no output file; so are OFF files with texture coordinates (STOFF), binary OFF with colours,
 and skeletons (SKEL), which CGAL's reader cannot read safely. Bad usage: exit status 1.

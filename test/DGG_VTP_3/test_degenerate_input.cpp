@@ -5,7 +5,8 @@
 
 // Inputs the documentation rejects with std::invalid_argument: invalid sources, invalid
 // accuracies, faces that are not triangles, non-finite coordinates, degenerate triangles,
-// coordinates whose squares overflow. And inputs it accepts however hostile they look (needles,
+// coordinates whose squares overflow, slivers and cones so thin that windows would wrap around
+// them for hours. And inputs it accepts however hostile they look (needles,
 // caps, 1e12 and 1e-12 scales, borders, pinched vertices, meshes without faces): finite
 // distances, never a NaN, in both modes (guards against the crashes and NaNs of the MMP-derived
 // codes on scanned meshes: libigl / geometry-central / pygeodesic / tvb-gdist
@@ -104,6 +105,17 @@ Soup l_shape()
   soup.points = {{0., 0., 0.}, {1., 0., 0.}, {2., 0., 0.}, {0., 1., 0.}, {1., 1., 0.}, {2., 1., 0.},
                  {0., 2., 0.}, {1., 2., 0.}};
   soup.faces = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {3, 4, 7}, {3, 7, 6}};
+  return soup;
+}
+
+// a cone 1 high over a triangle of circumradius r (apex angle about 3 sqrt(3) r), closed by a fan
+// at the centre of its base
+Soup cone(double r)
+{
+  Soup soup;
+  const double h = r * std::sqrt(3.) / 2.;
+  soup.points = {{0., 0., 1.}, {r, 0., 0.}, {-r / 2., h, 0.}, {-r / 2., -h, 0.}, {0., 0., 0.}};
+  soup.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {4, 2, 1}, {4, 3, 2}, {4, 1, 3}};
   return soup;
 }
 
@@ -234,6 +246,29 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(cap_triangle, Config, All_configurations)
   const auto mesh = make_mesh<typename Config::Mesh>(soup);
   for(std::size_t source : {0, 2, 3, 4})
     check_both_modes(mesh, source, euclidean_distances(mesh, source), 1e-6);
+}
+
+// Windows wrap around a needle-thin tube or cone about length / height (pi / apex angle) times
+// before the ICH rule prunes them: such meshes are refused (the tetrahedron 1 long and 1e-12 wide
+// that the fuzzer found kept the propagation busy for hours).
+BOOST_AUTO_TEST_CASE_TEMPLATE(slivers_and_sharp_cones_are_refused, Config, All_configurations)
+{
+  Soup tube;
+  tube.points = {{0., 0., 0.}, {1e-12, 1., 0.}, {0., 1e-12, 0.}, {0., 0., 1e-12}};
+  tube.faces = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  require_constructor_throws(make_mesh<typename Config::Mesh>(tube));
+  require_constructor_throws(make_mesh<typename Config::Mesh>(cone(1e-5))); // apex angle 5.2e-5
+}
+
+// just inside the limit (apex angle 1.04e-4): accepted, and the wrapping stays cheap
+BOOST_AUTO_TEST_CASE_TEMPLATE(cone_at_the_limit, Config, All_configurations)
+{
+  const double r = 2e-5;
+  const auto mesh = make_mesh<typename Config::Mesh>(cone(r));
+  check_both_modes(mesh, 1, {std::sqrt(1. + r * r), 0., r * std::sqrt(3.), r * std::sqrt(3.), r}, 1e-6);
+  CGAL::DGG_VTP_3::Propagation_statistics stats;
+  geodesic_distances(mesh, 1, &stats);
+  BOOST_TEST(stats.windows_created < 1000000u);
 }
 
 // a source on the border; the paths to 6 and 7 touch the reflex border corner 4

@@ -65,6 +65,12 @@ expect_usage_error() {
 }
 # expect_lines FILE EXPECTED...: the distances, compared to 1e-12 relative (inf exactly)
 expect_lines() { expect_lines_within 1e-12 "$@"; }
+# cone R: OBJ of a cone 1 high over a triangle of circumradius R, closed by a fan at its centre
+cone() {
+  awk -v r="$1" 'BEGIN { pi = atan2(0, -1); print "v 0 0 1"
+    for (i = 0; i < 3; ++i) printf "v %.17g %.17g 0\n", r * cos(2 * pi * i / 3), r * sin(2 * pi * i / 3)
+    print "v 0 0 0"; print "f 1 2 3\nf 1 3 4\nf 1 4 2\nf 5 3 2\nf 5 4 3\nf 5 2 4" }'
+}
 # expect_lines_within TOLERANCE FILE EXPECTED...: the same, to TOLERANCE relative
 expect_lines_within() {
   local tolerance=$1 file=$2; shift 2
@@ -433,6 +439,24 @@ case $case in
       run "$work/c.off" --quiet --source 4 $mode --output "$work/d.txt"; expect_rc 0
       expect_lines_within 1e-4 "$work/d.txt" 1.4142135623730951 1.4142135623730951 1.000000001 2 0
     done ;;
+  sliver_tube)  # a tetrahedron 1 long and 1e-12 wide: windows would wrap around it for hours
+    run "$data/needle_tube.obj" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *sliver* ]] || fail "$err" ;;
+  sharp_cone)  # three faces 1 long meeting at an apex of angle 5.2e-5: windows would wrap around it
+    cone 1e-5 > "$work/k.obj"
+    run "$work/k.obj" --source 1 --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *cone* ]] || fail "$err" ;;
+  cone_at_the_limit)  # the same cone, apex angle 1.04e-4: accepted, and cheap
+    cone 2e-5 > "$work/k.obj"
+    for mode in "" "--epsilon 1e-4" "--precision float"; do
+      run "$work/k.obj" --quiet --source 1 $mode --output "$work/d.txt" --stats "$work/s.json"; expect_rc 0
+      expect_lines_within 1e-6 "$work/d.txt" 1.0000000002 0 3.4641016151377546e-05 3.4641016151377546e-05 2e-05
+      windows=$(grep -o '"windows_created": *[0-9]*' "$work/s.json" | grep -o '[0-9]*$')
+      [ "$windows" -lt 1000000 ] || fail "$windows windows"
+    done ;;
+  needle_at_extreme_coordinates)  # two faces glued into a cone of angle 4.6e-7 at 3e38
+    run "$data/needle_at_1e38.stl" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *cone* ]] || fail "$err" ;;
   # surface
   non_manifold_edge)  # three faces on the edge 0-1
     printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n' | input e.off

@@ -73,7 +73,10 @@ public:
    *           `vertex_index_map` and `face_index_map`, with their usual CGAL meaning
    *
    * \throws std::invalid_argument if a face is not a triangle, a coordinate is not finite, or a
-   *         face is degenerate (zero length edge or zero area).
+   *         face is degenerate (zero length edge or zero area), a face is a sliver (an edge more
+   *         than 1e10 times longer than the height on it) or a vertex is the tip of a cone
+   *         sharper than 1e-4 radians (a closed fan whose angles add up to less): windows would
+   *         wrap around those too many times (see the input policy in the user manual).
    */
   template <class NamedParameters = parameters::Default_named_parameters>
   explicit Geodesic_distance_solver(const TriangleMesh& tm,

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -93,6 +94,19 @@ private:
   std::vector<char> m_singular;             // V: border or non-manifold vertex
   std::vector<char> m_exact_pseudo_source;  // V: pseudo-source of the exact (VTP) propagation
 };
+
+// The limits on input geometry beyond which windows wrap around thin parts of the surface so
+// often that a propagation would not finish (doc/: input policy). The window counts grow like
+// pi / (cone angle) and, on a tube of slivers, like the slivers' length / height.
+template <class FT> FT max_sliver_ratio() { return FT(1e10); }
+template <class FT> FT min_cone_angle() { return FT(1e-4); }
+
+inline std::string to_short_string(double x)
+{
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.3g", x);
+  return buffer;
+}
 
 template <class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
           class GeomTraits>
@@ -183,6 +197,10 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
       out.m_apex[hi] = {(ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2]) / len, twice_area / len};
       if(!(len > FT(0)) || !(out.m_apex[hi].y > FT(0)) || !CGAL::is_finite(out.m_apex[hi].x) || !CGAL::is_finite(out.m_apex[hi].y))
         throw std::invalid_argument("face " + std::to_string(fi) + " is degenerate (zero length edge or zero area)");
+      if(len > max_sliver_ratio<FT>() * out.m_apex[hi].y)
+        throw std::invalid_argument("face " + std::to_string(fi) + " is a sliver: an edge " +
+                                    to_short_string(CGAL::to_double(len / out.m_apex[hi].y)) + " times longer than the height on it (at most " +
+                                    to_short_string(CGAL::to_double(max_sliver_ratio<FT>())) + " is accepted)");
     }
   }
 
@@ -245,6 +263,30 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
       std::copy(ordered.begin(), ordered.end(), first);
     else
       out.m_singular[v] = 1;
+  }
+
+  // Windows wrap around the tip of a closed fan (a cone) about pi / angle times before the ICH
+  // rule prunes them, so a needle-sharp cone would make the propagation run for hours. Fans are
+  // walked one by one: a non-manifold vertex may join a sharp cone to other faces.
+  {
+    std::vector<char> walked(3 * nf, 0);
+    for(Index first = 0; first < 3 * nf; ++first)
+    {
+      if(walked[first])
+        continue;
+      FT angle(0);
+      Index h = first;
+      while(h != no_halfedge && !walked[h])
+      {
+        walked[h] = 1;
+        angle += out.corner_angle(h);
+        h = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
+      }
+      if(h == first && angle < min_cone_angle<FT>())
+        throw std::invalid_argument("vertex " + std::to_string(out.source(first)) + " is the tip of a cone of angle " +
+                                    to_short_string(CGAL::to_double(angle)) + " radians (at least " +
+                                    to_short_string(CGAL::to_double(min_cone_angle<FT>())) + " is accepted)");
+    }
   }
 
   // A flat vertex computed as slightly above 2*pi is harmless as a pseudo-source (its windows
