@@ -235,6 +235,15 @@ case $case in
     # and on a coordinate of another type than float or double
     printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty uint8 y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' | input y.ply
     run "$work/y.ply" --output "$work/d.txt"; expect_input_error ;;
+  ply_value_that_does_not_read)  # found by the fuzzer: a value CGAL's reader stops inside ("7x" read as
+    # the uchar 7), then an uninitialised list size it allocates (std::length_error)
+    printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty uchar q\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n7x 3 0 1 2\n' | input v.ply
+    run "$work/v.ply" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *damaged* ]] || fail "$err"
+    # the same file with a value that reads: accepted
+    printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty uchar q\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n7 3 0 1 2\n' | input w.ply
+    run "$work/w.ply" --quiet --output "$work/d.txt"; expect_rc 0
+    expect_lines "$work/d.txt" 0 1 1 ;;
   ply_truncated_or_unterminated)  # found by the fuzzer: CGAL read a list size from the end of the file
     # (an uninitialised value) and allocated it: a header without end_header, data ending early
     printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty list int16 int8 vertex_indices\nend_head\n0 0 0\n' | input h.ply

@@ -7,6 +7,7 @@
 #define DGGVTP_LOAD_MESH_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/io.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -307,6 +308,56 @@ inline void check_off_declarations(const std::string& path)
 // element, coordinates must be float or double, an element's count and a list's size must fit in
 // the file's bytes (lists are walked in the text and binary formats alike), and every type must be
 // one of PLY's.
+// Reads one ASCII value of a PLY type the way CGAL's reader extracts it (chars as numbers, then
+// narrowed; floats through CGAL's iformat), so that the walk below and CGAL's reader stop at the
+// same place: where a number does not read, CGAL goes on with an uninitialised list size.
+inline bool read_ply_ascii_value(std::istream& in, const std::string& type, double& value)
+{
+  if(type == "char" || type == "int8" || type == "short" || type == "int16")
+  {
+    short v;
+    if(!(in >> v))
+      return false;
+    value = (type == "char" || type == "int8") ? double(static_cast<signed char>(v)) : double(v);
+  }
+  else if(type == "uchar" || type == "uint8" || type == "ushort" || type == "uint16")
+  {
+    unsigned short v;
+    if(!(in >> v))
+      return false;
+    value = (type == "uchar" || type == "uint8") ? double(static_cast<unsigned char>(v)) : double(v);
+  }
+  else if(type == "int" || type == "int32")
+  {
+    std::int32_t v;
+    if(!(in >> v))
+      return false;
+    value = double(v);
+  }
+  else if(type == "uint" || type == "uint32")
+  {
+    std::uint32_t v;
+    if(!(in >> v))
+      return false;
+    value = double(v);
+  }
+  else if(type == "float" || type == "float32")
+  {
+    float v;
+    if(!(in >> CGAL::IO::iformat(v)))
+      return false;
+    value = double(v);
+  }
+  else
+  {
+    double v;
+    if(!(in >> CGAL::IO::iformat(v)))
+      return false;
+    value = v;
+  }
+  return true;
+}
+
 inline void check_ply_declarations(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -321,6 +372,8 @@ inline void check_ply_declarations(const std::string& path)
   {
     std::string name;
     std::string type;   // "list" for a list
+    std::string item_type;  // the type of the value (of each entry, for a list)
+    std::string count_type; // the type of a list's size
     int size = 0;       // bytes of the value (of each entry, for a list)
     int count_size = 0; // bytes of a list's size; 0 for a scalar
     bool count_signed = false;
@@ -386,6 +439,8 @@ inline void check_ply_declarations(const std::string& path)
       if(type == "list")
       {
         words >> count_type >> item_type >> p.name;
+        p.count_type = count_type;
+        p.item_type = item_type;
         p.count_size = type_size(count_type, p.count_signed);
         p.size = type_size(item_type, is_signed);
         if(p.count_size == 0 || count_type.compare(0, 5, "float") == 0 || count_type == "double")
@@ -394,6 +449,7 @@ inline void check_ply_declarations(const std::string& path)
       else
       {
         p.size = type_size(type, is_signed);
+        p.item_type = type;
         words >> p.name;
       }
       if(p.size == 0) // CGAL's reader may go on with a null reader for it (fuzzer)
@@ -433,7 +489,6 @@ inline void check_ply_declarations(const std::string& path)
   const auto truncated = [&](const Element& e) {
     return Input_error("'" + path + "' is truncated or damaged: the elements '" + e.name + "' do not read");
   };
-  std::string token;
   for(const Element& e : elements)
   {
     bool has_list = false;
@@ -447,9 +502,11 @@ inline void check_ply_declarations(const std::string& path)
     {
       if(ascii)
       {
-        for(long long r = 0; r < e.count * static_cast<long long>(e.properties.size()); ++r)
-          if(!(in >> token))
-            throw truncated(e);
+        double value;
+        for(long long r = 0; r < e.count; ++r)
+          for(const Property& p : e.properties)
+            if(!read_ply_ascii_value(in, p.item_type, value))
+              throw truncated(e);
       }
       else if(!in.seekg(static_cast<std::streamoff>(e.count * record_size), std::ios::cur))
         throw truncated(e);
@@ -458,23 +515,23 @@ inline void check_ply_declarations(const std::string& path)
     for(long long r = 0; r < e.count; ++r)
       for(const Property& p : e.properties)
       {
+        double value;
         if(p.count_size == 0)
         {
-          if(ascii ? !(in >> token) : !in.seekg(p.size, std::ios::cur))
+          if(ascii ? !read_ply_ascii_value(in, p.item_type, value) : !in.seekg(p.size, std::ios::cur))
             throw truncated(e);
           continue;
         }
         long long size = 0;
         if(ascii)
         {
-          double value;
-          if(!(in >> value))
+          if(!read_ply_ascii_value(in, p.count_type, value))
             throw truncated(e);
           if(!(value >= 0.) || value > double(bytes))
             throw list_too_large(e, r, value);
           size = static_cast<long long>(value);
           for(long long k = 0; k < size; ++k)
-            if(!(in >> token))
+            if(!read_ply_ascii_value(in, p.item_type, value))
               throw truncated(e);
         }
         else

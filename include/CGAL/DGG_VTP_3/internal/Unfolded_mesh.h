@@ -56,7 +56,7 @@ public:
   // the same edge seen from the neighbouring face, or `no_halfedge` on the border
   Index opposite(Index h) const { return m_opposite[h]; }
   FT length(Index h) const { return m_length[h]; }
-  const Vec2<FT>& apex(Index h) const { return m_apex[h]; }
+  Vec2<FT> apex(Index h) const { return {m_apex_x[h], m_twice_area[face(h)] / m_length[h]}; }
 
   // the corners at vertex `v`: halfedges `h` with `source(h) == v`, in turning order (see
   // corner_start_angle) unless `v` is singular
@@ -66,7 +66,7 @@ public:
   // total angle around `v` (2*pi for a flat interior vertex), in radians
   FT angle_sum(Index v) const { return m_angle_sum[v]; }
   // the angle of the corner of halfedge `h` at its source
-  FT corner_angle(Index h) const { using std::atan2; return atan2(m_apex[h].y, m_apex[h].x); }
+  FT corner_angle(Index h) const { using std::atan2; const Vec2<FT> c = apex(h); return atan2(c.y, c.x); }
   // polar angle at source(h) of the direction of `h`; the corner of `h` spans
   // [corner_start_angle(h), corner_start_angle(h) + corner_angle(h)], corners in turning order
   FT corner_start_angle(Index h) const { return m_corner_start_angle[h]; }
@@ -86,7 +86,8 @@ private:
   std::vector<Index> m_corner_vertex;       // 3F: vertex at each corner
   std::vector<Index> m_opposite;            // 3F: opposite corner halfedge, or no_halfedge
   std::vector<FT> m_length;                 // 3F: length of each halfedge
-  std::vector<Vec2<FT>> m_apex;             // 3F: apex in each halfedge's frame
+  std::vector<FT> m_apex_x;                 // 3F: abscissa of the apex in each halfedge's frame
+  std::vector<FT> m_twice_area;             // F: twice the area (the apex's height times the length)
   std::vector<Index> m_vertex_corners_begin;// V+1: CSR offsets into m_vertex_corners
   std::vector<Index> m_vertex_corners;      // 3F: corners grouped by vertex, in turning order
   std::vector<FT> m_corner_start_angle;     // 3F: polar angle of each corner's first edge
@@ -147,7 +148,8 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
   out.m_corner_vertex.resize(3 * nf);
   out.m_opposite.resize(3 * nf);
   out.m_length.resize(3 * nf);
-  out.m_apex.resize(3 * nf);
+  out.m_apex_x.resize(3 * nf);
+  out.m_twice_area.resize(nf);
   std::vector<char> face_seen(nf, 0);
   for(auto f : faces(tm))
   {
@@ -174,13 +176,14 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
     }
   }
 
-  // unfold each triangle onto each of its three edges
+  // unfold each triangle onto each of its three edges; the area comes from the two shortest edges
   for(std::size_t fi = 0; fi < nf; ++fi)
   {
     FT p[3][3];
     for(int k = 0; k < 3; ++k)
       for(int c = 0; c < 3; ++c)
         p[k][c] = xyz[3 * out.m_corner_vertex[3 * fi + k] + c];
+    FT twice_area(0), longest(0);
     for(int k = 0; k < 3; ++k)
     {
       const FT* a = p[k];
@@ -188,21 +191,35 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
       const FT* c = p[(k + 2) % 3];
       const FT ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
       const FT ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-      const FT n[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
       using std::sqrt;
       const FT len = sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
-      const FT twice_area = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
       const Index hi = Index(3 * fi + k);
       out.m_length[hi] = len;
-      out.m_apex[hi] = {(ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2]) / len, twice_area / len};
-      if(!(len > FT(0)) || !(out.m_apex[hi].y > FT(0)) || !CGAL::is_finite(out.m_apex[hi].x) || !CGAL::is_finite(out.m_apex[hi].y))
+      out.m_apex_x[hi] = (ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2]) / len;
+      if(!(len > FT(0)) || !CGAL::is_finite(len) || !CGAL::is_finite(out.m_apex_x[hi]))
         throw std::invalid_argument("face " + std::to_string(fi) + " is degenerate (zero length edge or zero area)");
-      if(len > max_sliver_ratio<FT>() * out.m_apex[hi].y)
-        throw std::invalid_argument("face " + std::to_string(fi) + " is a sliver: an edge " +
-                                    to_short_string(CGAL::to_double(len / out.m_apex[hi].y)) + " times longer than the height on it (at most " +
-                                    to_short_string(CGAL::to_double(max_sliver_ratio<FT>())) + " is accepted)");
+      // the edge after the longest one and the one before it meet at the corner opposite it
+      if(len > longest || k == 0)
+      {
+        longest = len;
+        const FT* o = p[(k + 2) % 3];
+        const FT u[3] = {a[0] - o[0], a[1] - o[1], a[2] - o[2]};
+        const FT v[3] = {b[0] - o[0], b[1] - o[1], b[2] - o[2]};
+        const FT n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        twice_area = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      }
     }
+    out.m_twice_area[fi] = twice_area;
+    if(!(twice_area > FT(0)) || !CGAL::is_finite(twice_area) || !CGAL::is_finite(twice_area / longest))
+      throw std::invalid_argument("face " + std::to_string(fi) + " is degenerate (zero length edge or zero area)");
+    // longest / height on it = longest^2 / (2 area)
+    if(longest > max_sliver_ratio<FT>() * (twice_area / longest))
+      throw std::invalid_argument("face " + std::to_string(fi) + " is a sliver: an edge " +
+                                  to_short_string(CGAL::to_double(longest * longest / twice_area)) +
+                                  " times longer than the height on it (at most " +
+                                  to_short_string(CGAL::to_double(max_sliver_ratio<FT>())) + " is accepted)");
   }
+  xyz = std::vector<FT>(); // its memory is the peak's
 
   // corners around each vertex (CSR), angle sums, border vertices
   out.m_vertex_corners_begin.assign(nv + 1, 0);

@@ -212,7 +212,7 @@ private:
     if(t == Mesh::no_halfedge)
       return;
     const FT len = m_mesh.length(across);
-    const Point& apex = m_mesh.apex(across);
+    const Point apex = m_mesh.apex(across);
     Win w;
     w.b0 = FT(0);
     w.b1 = len;
@@ -290,7 +290,7 @@ private:
   {
     m_lists.take(h, m_buffer);
     const Index apex_vertex = m_mesh.source(Mesh::prev(h));
-    const Point& c = m_mesh.apex(h);
+    const Point c = m_mesh.apex(h);
 
     // line 18: distance bound and ICH rule
     std::size_t kept = 0;
@@ -571,7 +571,7 @@ private:
   // window's ray to c crosses the base
   void add_left_child(Index h, const Win& w, FT x, Index left)
   {
-    const Point& c = m_mesh.apex(h);
+    const Point c = m_mesh.apex(h);
     const FT len = m_mesh.length(Mesh::prev(h));
     const Point a{FT(0), FT(0)};
     const FT u0 = ray_segment_parameter(w.source, Point{w.b0, FT(0)}, a, c);
@@ -590,7 +590,7 @@ private:
   // child on edge (b, c), in the frame of the neighbouring halfedge c -> b
   void add_right_child(Index h, const Win& w, FT x, Index right)
   {
-    const Point& c = m_mesh.apex(h);
+    const Point c = m_mesh.apex(h);
     const FT len = m_mesh.length(Mesh::next(h));
     const Point b{m_mesh.length(h), FT(0)};
     const FT v0 = w.b0 < x ? FT(0) : ray_segment_parameter(w.source, Point{w.b0, FT(0)}, c, b);
