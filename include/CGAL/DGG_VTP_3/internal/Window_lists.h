@@ -9,6 +9,7 @@
 #include <CGAL/DGG_VTP_3/internal/Window.h>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -17,7 +18,9 @@ namespace internal {
 
 // One window list per halfedge (VTP groups windows by the edge side they sit on), all lists
 // threaded through one pool of windows with a free list: no allocation per window, and memory
-// proportional to the live wavefront, not to the number of windows ever created.
+// proportional to the live wavefront, not to the number of windows ever created. The pool grows
+// by blocks that never move: a vector would double its capacity and copy itself, holding up to
+// three times the live windows at that moment.
 template <class FT>
 class Window_lists
 {
@@ -37,16 +40,19 @@ public:
     if(m_free != nil)
     {
       i = m_free;
-      m_free = m_next[i];
-      m_pool[i] = w;
+      m_free = next(i);
     }
     else
     {
-      i = Index(m_pool.size());
-      m_pool.push_back(w);
-      m_next.push_back(nil);
+      i = m_size++;
+      if((i & block_mask) == 0)
+      {
+        m_window_blocks.emplace_back(new Window<FT>[block_mask + 1]);
+        m_next_blocks.emplace_back(new Index[block_mask + 1]);
+      }
     }
-    m_next[i] = m_head[h];
+    window(i) = w;
+    next(i) = m_head[h];
     m_head[h] = i;
     ++m_created;
     if(++m_live > m_peak)
@@ -61,9 +67,9 @@ public:
     m_head[h] = nil;
     while(i != nil)
     {
-      out.push_back(m_pool[i]);
-      const Index n = m_next[i];
-      m_next[i] = m_free;
+      out.push_back(window(i));
+      const Index n = next(i);
+      next(i) = m_free;
       m_free = i;
       --m_live;
       i = n;
@@ -74,9 +80,14 @@ public:
   std::size_t peak() const { return m_peak; }
 
 private:
+  static constexpr Index block_mask = (Index(1) << 12) - 1; // slots per block, minus 1
+  Window<FT>& window(Index i) { return m_window_blocks[i >> 12][i & block_mask]; }
+  Index& next(Index i) { return m_next_blocks[i >> 12][i & block_mask]; }
+
   std::vector<Index> m_head;      // per halfedge: first window of its list, or nil
-  std::vector<Window<FT>> m_pool; // windows, live or free
-  std::vector<Index> m_next;      // per pool slot: next window of its list, or next free slot
+  std::vector<std::unique_ptr<Window<FT>[]>> m_window_blocks; // the pool: windows, live or free
+  std::vector<std::unique_ptr<Index[]>> m_next_blocks; // per slot: next window of its list, or next free slot
+  Index m_size = 0;               // slots ever used
   Index m_free = nil;             // first free slot of the pool
   std::size_t m_live = 0;         // windows currently stored in lists
   std::size_t m_peak = 0;         // maximum of m_live
