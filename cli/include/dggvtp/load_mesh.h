@@ -299,6 +299,83 @@ inline void check_off_declarations(const std::string& path)
   }
 }
 
+// The scalar types of PLY, each under its two names
+enum class Ply_type { unknown, int8, uint8, int16, uint16, int32, uint32, float32, float64 };
+
+inline Ply_type ply_type(const std::string& name)
+{
+  if(name == "char" || name == "int8") return Ply_type::int8;
+  if(name == "uchar" || name == "uint8") return Ply_type::uint8;
+  if(name == "short" || name == "int16") return Ply_type::int16;
+  if(name == "ushort" || name == "uint16") return Ply_type::uint16;
+  if(name == "int" || name == "int32") return Ply_type::int32;
+  if(name == "uint" || name == "uint32") return Ply_type::uint32;
+  if(name == "float" || name == "float32") return Ply_type::float32;
+  if(name == "double" || name == "float64") return Ply_type::float64;
+  return Ply_type::unknown;
+}
+
+// bytes of a value in the binary formats; 0 for an unknown type
+inline int ply_type_size(Ply_type type)
+{
+  switch(type)
+  {
+    case Ply_type::int8: case Ply_type::uint8: return 1;
+    case Ply_type::int16: case Ply_type::uint16: return 2;
+    case Ply_type::int32: case Ply_type::uint32: case Ply_type::float32: return 4;
+    case Ply_type::float64: return 8;
+    default: return 0;
+  }
+}
+
+inline bool is_ply_signed_integer(Ply_type type)
+{
+  return type == Ply_type::int8 || type == Ply_type::int16 || type == Ply_type::int32;
+}
+
+inline bool is_ply_integer(Ply_type type)
+{
+  return ply_type_size(type) > 0 && type != Ply_type::float32 && type != Ply_type::float64;
+}
+
+// Reads one ASCII value of a PLY type the way CGAL's reader extracts it (chars as numbers, then
+// narrowed; floats through CGAL's iformat), so that the walk below and CGAL's reader stop at the
+// same place: where a number does not read, CGAL goes on with an uninitialised list size.
+template <class T, class Read_as = T>
+bool read_ply_ascii_as(std::istream& in, double& value)
+{
+  Read_as v;
+  if(!(in >> v))
+    return false;
+  value = double(static_cast<T>(v));
+  return true;
+}
+
+template <class T>
+bool read_ply_ascii_float(std::istream& in, double& value)
+{
+  T v;
+  if(!(in >> CGAL::IO::iformat(v)))
+    return false;
+  value = double(v);
+  return true;
+}
+
+inline bool read_ply_ascii_value(std::istream& in, Ply_type type, double& value)
+{
+  switch(type)
+  {
+    case Ply_type::int8: return read_ply_ascii_as<signed char, short>(in, value);
+    case Ply_type::uint8: return read_ply_ascii_as<unsigned char, unsigned short>(in, value);
+    case Ply_type::int16: return read_ply_ascii_as<short>(in, value);
+    case Ply_type::uint16: return read_ply_ascii_as<unsigned short>(in, value);
+    case Ply_type::int32: return read_ply_ascii_as<std::int32_t>(in, value);
+    case Ply_type::uint32: return read_ply_ascii_as<std::uint32_t>(in, value);
+    case Ply_type::float32: return read_ply_ascii_float<float>(in, value);
+    default: return read_ply_ascii_float<double>(in, value);
+  }
+}
+
 // CGAL's PLY reader allocates each list (a face's vertex indices) at the size it declares before
 // reading it, and iterates over each element as many times as the header says, even an element
 // without properties: a file of a few bytes could claim gigabytes, a negative size, or keep the
@@ -308,56 +385,6 @@ inline void check_off_declarations(const std::string& path)
 // element, coordinates must be float or double, an element's count and a list's size must fit in
 // the file's bytes (lists are walked in the text and binary formats alike), and every type must be
 // one of PLY's.
-// Reads one ASCII value of a PLY type the way CGAL's reader extracts it (chars as numbers, then
-// narrowed; floats through CGAL's iformat), so that the walk below and CGAL's reader stop at the
-// same place: where a number does not read, CGAL goes on with an uninitialised list size.
-inline bool read_ply_ascii_value(std::istream& in, const std::string& type, double& value)
-{
-  if(type == "char" || type == "int8" || type == "short" || type == "int16")
-  {
-    short v;
-    if(!(in >> v))
-      return false;
-    value = (type == "char" || type == "int8") ? double(static_cast<signed char>(v)) : double(v);
-  }
-  else if(type == "uchar" || type == "uint8" || type == "ushort" || type == "uint16")
-  {
-    unsigned short v;
-    if(!(in >> v))
-      return false;
-    value = (type == "uchar" || type == "uint8") ? double(static_cast<unsigned char>(v)) : double(v);
-  }
-  else if(type == "int" || type == "int32")
-  {
-    std::int32_t v;
-    if(!(in >> v))
-      return false;
-    value = double(v);
-  }
-  else if(type == "uint" || type == "uint32")
-  {
-    std::uint32_t v;
-    if(!(in >> v))
-      return false;
-    value = double(v);
-  }
-  else if(type == "float" || type == "float32")
-  {
-    float v;
-    if(!(in >> CGAL::IO::iformat(v)))
-      return false;
-    value = double(v);
-  }
-  else
-  {
-    double v;
-    if(!(in >> CGAL::IO::iformat(v)))
-      return false;
-    value = v;
-  }
-  return true;
-}
-
 inline void check_ply_declarations(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -371,31 +398,18 @@ inline void check_ply_declarations(const std::string& path)
   struct Property
   {
     std::string name;
-    std::string type;   // "list" for a list
-    std::string item_type;  // the type of the value (of each entry, for a list)
-    std::string count_type; // the type of a list's size
-    int size = 0;       // bytes of the value (of each entry, for a list)
-    int count_size = 0; // bytes of a list's size; 0 for a scalar
-    bool count_signed = false;
+    std::string type;   // as written; "list" for a list
+    Ply_type item = Ply_type::unknown;  // the value's type (each entry's, for a list)
+    Ply_type count = Ply_type::unknown; // a list's size type
+    bool list = false;
+    int size() const { return ply_type_size(item); }
+    int count_size() const { return ply_type_size(count); }
   };
   struct Element
   {
     std::string name;
     long long count = 0;
     std::vector<Property> properties;
-  };
-  const auto type_size = [](const std::string& type, bool& is_signed) {
-    is_signed = type == "char" || type == "short" || type == "int" || type == "int8" || type == "int16" ||
-                type == "int32";
-    if(type == "char" || type == "uchar" || type == "int8" || type == "uint8")
-      return 1;
-    if(type == "short" || type == "ushort" || type == "int16" || type == "uint16")
-      return 2;
-    if(type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" || type == "float32")
-      return 4;
-    if(type == "double" || type == "float64")
-      return 8;
-    return 0;
   };
 
   // the header as CGAL reads it: "ply" as the first word of line 1, the format as the second word
@@ -431,28 +445,21 @@ inline void check_ply_declarations(const std::string& path)
     {
       if(elements.empty()) // CGAL's reader would add it to the last of no elements
         throw Input_error("'" + path + "': the PLY header has a property before any element");
-      std::string type, count_type, item_type;
-      words >> type;
       Property p;
-      p.type = type;
-      bool is_signed = false;
-      if(type == "list")
+      words >> p.type;
+      p.list = p.type == "list";
+      std::string count_type, item_type = p.type;
+      if(p.list)
+        words >> count_type >> item_type;
+      words >> p.name;
+      p.item = ply_type(item_type);
+      if(p.list)
       {
-        words >> count_type >> item_type >> p.name;
-        p.count_type = count_type;
-        p.item_type = item_type;
-        p.count_size = type_size(count_type, p.count_signed);
-        p.size = type_size(item_type, is_signed);
-        if(p.count_size == 0 || count_type.compare(0, 5, "float") == 0 || count_type == "double")
+        p.count = ply_type(count_type);
+        if(!is_ply_integer(p.count))
           throw Input_error("'" + path + "': the PLY list '" + p.name + "' has a size type that is not an integer type");
       }
-      else
-      {
-        p.size = type_size(type, is_signed);
-        p.item_type = type;
-        words >> p.name;
-      }
-      if(p.size == 0) // CGAL's reader may go on with a null reader for it (fuzzer)
+      if(p.item == Ply_type::unknown) // CGAL's reader may go on with a null reader for it (fuzzer)
         throw Input_error("'" + path + "': the PLY property '" + p.name + "' has an unknown type");
       elements.back().properties.push_back(p);
     }
@@ -466,7 +473,7 @@ inline void check_ply_declarations(const std::string& path)
         for(const Property& p : e.properties)
           if(p.name == coordinate)
           {
-            if(p.type != "float" && p.type != "float32" && p.type != "double" && p.type != "float64")
+            if(p.list || (p.item != Ply_type::float32 && p.item != Ply_type::float64))
               throw Input_error("'" + path + "': the vertex coordinate " + coordinate + " is of type " + p.type +
                                 "; only float and double coordinates are read");
             break;
@@ -495,8 +502,8 @@ inline void check_ply_declarations(const std::string& path)
     long long record_size = 0;
     for(const Property& p : e.properties)
     {
-      has_list = has_list || p.count_size > 0;
-      record_size += p.size;
+      has_list = has_list || p.list;
+      record_size += p.size();
     }
     if(!has_list)
     {
@@ -505,7 +512,7 @@ inline void check_ply_declarations(const std::string& path)
         double value;
         for(long long r = 0; r < e.count; ++r)
           for(const Property& p : e.properties)
-            if(!read_ply_ascii_value(in, p.item_type, value))
+            if(!read_ply_ascii_value(in, p.item, value))
               throw truncated(e);
       }
       else if(!in.seekg(static_cast<std::streamoff>(e.count * record_size), std::ios::cur))
@@ -516,38 +523,39 @@ inline void check_ply_declarations(const std::string& path)
       for(const Property& p : e.properties)
       {
         double value;
-        if(p.count_size == 0)
+        if(!p.list)
         {
-          if(ascii ? !read_ply_ascii_value(in, p.item_type, value) : !in.seekg(p.size, std::ios::cur))
+          if(ascii ? !read_ply_ascii_value(in, p.item, value) : !in.seekg(p.size(), std::ios::cur))
             throw truncated(e);
           continue;
         }
         long long size = 0;
         if(ascii)
         {
-          if(!read_ply_ascii_value(in, p.count_type, value))
+          if(!read_ply_ascii_value(in, p.count, value))
             throw truncated(e);
           if(!(value >= 0.) || value > double(bytes))
             throw list_too_large(e, r, value);
           size = static_cast<long long>(value);
           for(long long k = 0; k < size; ++k)
-            if(!read_ply_ascii_value(in, p.item_type, value))
+            if(!read_ply_ascii_value(in, p.item, value))
               throw truncated(e);
         }
         else
         {
           unsigned char b[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-          if(!in.read(reinterpret_cast<char*>(b), p.count_size))
+          const int count_size = p.count_size();
+          if(!in.read(reinterpret_cast<char*>(b), count_size))
             throw truncated(e);
           std::uint64_t u = 0;
-          for(int k = 0; k < p.count_size; ++k)
-            u |= std::uint64_t(b[big_endian ? p.count_size - 1 - k : k]) << (8 * k);
-          if(p.count_signed && (u >> (8 * p.count_size - 1)) != 0)
-            throw list_too_large(e, r, double(static_cast<long long>(u) - (1LL << (8 * p.count_size))));
+          for(int k = 0; k < count_size; ++k)
+            u |= std::uint64_t(b[big_endian ? count_size - 1 - k : k]) << (8 * k);
+          if(is_ply_signed_integer(p.count) && (u >> (8 * count_size - 1)) != 0)
+            throw list_too_large(e, r, double(static_cast<long long>(u) - (1LL << (8 * count_size))));
           if(u > std::uint64_t(bytes))
             throw list_too_large(e, r, double(u));
           size = static_cast<long long>(u);
-          if(!in.seekg(static_cast<std::streamoff>(size * p.size), std::ios::cur))
+          if(!in.seekg(static_cast<std::streamoff>(size * p.size()), std::ios::cur))
             throw truncated(e);
         }
       }

@@ -183,6 +183,9 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
     for(int k = 0; k < 3; ++k)
       for(int c = 0; c < 3; ++c)
         p[k][c] = xyz[3 * out.m_corner_vertex[3 * fi + k] + c];
+    const auto degenerate = [fi] {
+      return std::invalid_argument("face " + std::to_string(fi) + " is degenerate (zero length edge or zero area)");
+    };
     FT twice_area(0), longest(0);
     for(int k = 0; k < 3; ++k)
     {
@@ -197,9 +200,9 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
       out.m_length[hi] = len;
       out.m_apex_x[hi] = (ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2]) / len;
       if(!(len > FT(0)) || !CGAL::is_finite(len) || !CGAL::is_finite(out.m_apex_x[hi]))
-        throw std::invalid_argument("face " + std::to_string(fi) + " is degenerate (zero length edge or zero area)");
+        throw degenerate();
       // the edge after the longest one and the one before it meet at the corner opposite it
-      if(len > longest || k == 0)
+      if(len > longest)
       {
         longest = len;
         const FT* o = p[(k + 2) % 3];
@@ -211,7 +214,7 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
     }
     out.m_twice_area[fi] = twice_area;
     if(!(twice_area > FT(0)) || !CGAL::is_finite(twice_area) || !CGAL::is_finite(twice_area / longest))
-      throw std::invalid_argument("face " + std::to_string(fi) + " is degenerate (zero length edge or zero area)");
+      throw degenerate();
     // longest / height on it = longest^2 / (2 area)
     if(longest > max_sliver_ratio<FT>() * (twice_area / longest))
       throw std::invalid_argument("face " + std::to_string(fi) + " is a sliver: an edge " +
@@ -283,26 +286,38 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
   }
 
   // Windows wrap around the tip of a closed fan (a cone) about pi / angle times before the ICH
-  // rule prunes them, so a needle-sharp cone would make the propagation run for hours. Fans are
-  // walked one by one: a non-manifold vertex may join a sharp cone to other faces.
+  // rule prunes them, so a needle-sharp cone would make the propagation run for hours. A regular
+  // vertex is one closed fan, its angle sum; at a singular one (border, or several fans meeting
+  // there), each fan that closes is walked: a sharp cone may be joined to other faces.
   {
-    std::vector<char> walked(3 * nf, 0);
-    for(Index first = 0; first < 3 * nf; ++first)
-    {
-      if(walked[first])
-        continue;
-      FT angle(0);
-      Index h = first;
-      while(h != no_halfedge && !walked[h])
-      {
-        walked[h] = 1;
-        angle += out.corner_angle(h);
-        h = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
-      }
-      if(h == first && angle < min_cone_angle<FT>())
-        throw std::invalid_argument("vertex " + std::to_string(out.source(first)) + " is the tip of a cone of angle " +
+    const auto check_cone = [](std::size_t v, FT angle) {
+      if(angle < min_cone_angle<FT>())
+        throw std::invalid_argument("vertex " + std::to_string(v) + " is the tip of a cone of angle " +
                                     to_short_string(CGAL::to_double(angle)) + " radians (at least " +
                                     to_short_string(CGAL::to_double(min_cone_angle<FT>())) + " is accepted)");
+    };
+    std::vector<char> walked(3 * nf, 0);
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      if(!out.m_singular[v])
+      {
+        if(out.corners_begin(Index(v)) != out.corners_end(Index(v)))
+          check_cone(v, out.m_angle_sum[v]);
+        continue;
+      }
+      for(const Index* first = out.corners_begin(Index(v)); first != out.corners_end(Index(v)); ++first)
+      {
+        FT angle(0);
+        Index h = *first;
+        while(h != no_halfedge && !walked[h])
+        {
+          walked[h] = 1;
+          angle += out.corner_angle(h);
+          h = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
+        }
+        if(h == *first && angle > FT(0))
+          check_cone(v, angle);
+      }
     }
   }
 

@@ -80,9 +80,10 @@ public:
   std::size_t peak() const { return m_peak; }
 
 private:
-  static constexpr Index block_mask = (Index(1) << 12) - 1; // slots per block, minus 1
-  Window<FT>& window(Index i) { return m_window_blocks[i >> 12][i & block_mask]; }
-  Index& next(Index i) { return m_next_blocks[i >> 12][i & block_mask]; }
+  static constexpr int block_bits = 12; // 4096 slots per block
+  static constexpr Index block_mask = (Index(1) << block_bits) - 1;
+  Window<FT>& window(Index i) { return m_window_blocks[i >> block_bits][i & block_mask]; }
+  Index& next(Index i) { return m_next_blocks[i >> block_bits][i & block_mask]; }
 
   std::vector<Index> m_head;      // per halfedge: first window of its list, or nil
   std::vector<std::unique_ptr<Window<FT>[]>> m_window_blocks; // the pool: windows, live or free

@@ -342,9 +342,9 @@ private:
       const FT x = m_crossings[i];
       const bool lights_apex = w.b0 <= x && x <= w.b1;
       if(left != Mesh::no_halfedge && w.b0 < x && !(lights_apex && w.b0 >= best_crossing))
-        add_left_child(h, w, x, left);
+        add_left_child(h, c, w, x, left);
       if(right != Mesh::no_halfedge && x < w.b1 && !(lights_apex && w.b1 <= best_crossing))
-        add_right_child(h, w, x, right);
+        add_right_child(h, c, w, x, right);
     }
   }
 
@@ -567,11 +567,10 @@ private:
       end = t;
   }
 
-  // child on edge (a, c), in the frame of the neighbouring halfedge a -> c; `x` is where the
-  // window's ray to c crosses the base
-  void add_left_child(Index h, const Win& w, FT x, Index left)
+  // child on edge (a, c), in the frame of the neighbouring halfedge a -> c; `c` is the apex of
+  // `h`, `x` where the window's ray to c crosses the base
+  void add_left_child(Index h, const Point& c, const Win& w, FT x, Index left)
   {
-    const Point c = m_mesh.apex(h);
     const FT len = m_mesh.length(Mesh::prev(h));
     const Point a{FT(0), FT(0)};
     const FT u0 = ray_segment_parameter(w.source, Point{w.b0, FT(0)}, a, c);
@@ -588,9 +587,8 @@ private:
   }
 
   // child on edge (b, c), in the frame of the neighbouring halfedge c -> b
-  void add_right_child(Index h, const Win& w, FT x, Index right)
+  void add_right_child(Index h, const Point& c, const Win& w, FT x, Index right)
   {
-    const Point c = m_mesh.apex(h);
     const FT len = m_mesh.length(Mesh::next(h));
     const Point b{m_mesh.length(h), FT(0)};
     const FT v0 = w.b0 < x ? FT(0) : ray_segment_parameter(w.source, Point{w.b0, FT(0)}, c, b);
