@@ -301,10 +301,8 @@ private:
     if(!is_dgg())
       trim_overlapping_windows();
 
-    // "one angle, two sides": the window that reaches c best splits the face along its ray to c;
-    // another window that also lights c but lies entirely on one side of that ray keeps only its
-    // child on that side: its paths to the other side would cross the best path to c, which is
-    // no longer than theirs where they meet (a window that does not light c has no such bound)
+    // "one angle, two sides": the window that reaches c best, B, splits the face along its path
+    // to c, and the other windows' children keep to their side of it (see `sides`)
     FT best_distance = infinity();
     FT best_crossing = FT(0);
     const Win* best = nullptr;
@@ -340,12 +338,69 @@ private:
     {
       const Win& w = m_buffer[i];
       const FT x = m_crossings[i];
-      const bool lights_apex = w.b0 <= x && x <= w.b1;
-      if(left != Mesh::no_halfedge && w.b0 < x && !(lights_apex && w.b0 >= best_crossing))
-        add_left_child(h, c, w, x, left);
-      if(right != Mesh::no_halfedge && x < w.b1 && !(lights_apex && w.b1 <= best_crossing))
-        add_right_child(h, c, w, x, right);
+      Sides keep{w.b1, w.b0};
+      if(best != nullptr && &w != best)
+        keep = sides(w, x, c, *best, best_crossing, best_distance);
+      if(left != Mesh::no_halfedge && w.b0 < (std::min)(x, keep.left_end))
+        add_left_child(h, c, w, x, keep.left_end, left);
+      if(right != Mesh::no_halfedge && (std::max)(x, keep.right_start) < w.b1)
+        add_right_child(h, c, w, x, keep.right_start, right);
     }
+  }
+
+  // The part of w's interval whose rays may still go left of the apex c (those up to `left_end`)
+  // and right of it (from `right_start` on), given the best window B to c.
+  struct Sides
+  {
+    FT left_end;
+    FT right_start;
+  };
+
+  // A shortest path does not cross B's path to c where B is there first. If w's own way to c
+  // (straight when it lights c, else through its nearer end) is no shorter than B's, then B is
+  // first at every point of its path that a ray of w reaches (else that ray, then B's path, would
+  // reach c sooner), so w keeps only the rays that stay on their side of B's path: above the edge,
+  // those that pass c on B's side of B's crossing; below it, those that did not cut B's segment
+  // from its pseudo-source. Below the edge, the two windows' unfoldings are known to be the same
+  // surface only inside w's lit triangle, so that test applies only when w's interval contains
+  // B's crossing. In DGG-VTP B's path is itself approximate, and cutting w behind it loses
+  // accuracy unless w is clearly worse: by more than the bound's relative tolerance; otherwise
+  // only the classic rule applies, a window lighting c wholly on one side of B's crossing keeps
+  // only its child on that side.
+  Sides sides(const Win& w, FT x, const Point& c, const Win& best, FT best_crossing, FT best_distance) const
+  {
+    const bool lights_apex = w.b0 <= x && x <= w.b1;
+    const FT end = x < w.b0 ? w.b0 : w.b1;
+    const FT to_c = lights_apex ? w.distance_to(c) : w.distance_to_base_point(end) + length(c - Point{end, FT(0)});
+    Sides keep{w.b1, w.b0};
+    if(to_c >= best_distance * (FT(1) + m_bound_epsilon))
+    {
+      keep.left_end = (std::min)(best_crossing, w.b1);
+      keep.right_start = (std::max)(best_crossing, w.b0);
+      if(w.b0 < best_crossing && best_crossing < w.b1)
+      {
+        // a ray of w that meets the edge on the other side of B's line than w's source crossed
+        // that line below the edge; on B's segment [s_B, (best_crossing, 0)] (not beyond s_B) up
+        // to the ray through s_B, which meets the edge at beyond_sB (all of them if s_B is not
+        // nearer the edge than w's source)
+        const Point& sB = best.source;
+        const FT side = cross(Point{best_crossing - sB.x, -sB.y}, w.source - sB);
+        const bool sB_nearer = sB.y > w.source.y;
+        const FT beyond_sB = sB_nearer ? x_axis_crossing(w.source, sB) : FT(0);
+        if(side < FT(0))
+          keep.left_end = sB_nearer ? (std::min)(best_crossing, beyond_sB) : -infinity();
+        else if(side > FT(0))
+          keep.right_start = sB_nearer ? (std::max)(best_crossing, beyond_sB) : infinity();
+      }
+    }
+    else if(lights_apex)
+    {
+      if(w.b0 >= best_crossing)
+        keep.left_end = w.b0;
+      if(w.b1 <= best_crossing)
+        keep.right_start = w.b1;
+    }
+    return keep;
   }
 
   // The ICH rule (Xin and Wang), applied as trimming: the part of the interval where reaching the
@@ -567,31 +622,35 @@ private:
       end = t;
   }
 
-  // child on edge (a, c), in the frame of the neighbouring halfedge a -> c; `c` is the apex of
-  // `h`, `x` where the window's ray to c crosses the base
-  void add_left_child(Index h, const Point& c, const Win& w, FT x, Index left)
+  // child on edge (a, c), in the frame of the neighbouring halfedge a -> c, from the rays of `w`
+  // through [b0, min(end, x)]; `c` is the apex of `h`, `x` where the window's ray to c crosses
+  // the base
+  void add_left_child(Index h, const Point& c, const Win& w, FT x, FT end, Index left)
   {
     const FT len = m_mesh.length(Mesh::prev(h));
     const Point a{FT(0), FT(0)};
+    const bool grazes_c = x < end;
     const FT u0 = ray_segment_parameter(w.source, Point{w.b0, FT(0)}, a, c);
-    const FT u1 = x < w.b1 ? FT(1) : ray_segment_parameter(w.source, Point{w.b1, FT(0)}, a, c);
+    const FT u1 = grazes_c ? FT(1) : ray_segment_parameter(w.source, Point{end, FT(0)}, a, c);
     if(!(u0 < u1))
       return;
     Win child = w;
     child.b0 = u0 * len;
     child.b1 = u1 * len;
     child.source = to_neighbour_frame(w.source, a, c, len);
-    if(x < w.b1) // line 22: the child's b1 ray grazes c, its new CH-relay vertex
+    if(grazes_c) // line 22: the child's b1 ray grazes c, its new CH-relay vertex
       update_relay(child, child.relay_right, length(c - w.source));
     add_window(left, child);
   }
 
-  // child on edge (b, c), in the frame of the neighbouring halfedge c -> b
-  void add_right_child(Index h, const Point& c, const Win& w, FT x, Index right)
+  // child on edge (b, c), in the frame of the neighbouring halfedge c -> b, from the rays of `w`
+  // through [max(start, x), b1]
+  void add_right_child(Index h, const Point& c, const Win& w, FT x, FT start, Index right)
   {
     const FT len = m_mesh.length(Mesh::next(h));
     const Point b{m_mesh.length(h), FT(0)};
-    const FT v0 = w.b0 < x ? FT(0) : ray_segment_parameter(w.source, Point{w.b0, FT(0)}, c, b);
+    const bool grazes_c = start < x;
+    const FT v0 = grazes_c ? FT(0) : ray_segment_parameter(w.source, Point{start, FT(0)}, c, b);
     const FT v1 = ray_segment_parameter(w.source, Point{w.b1, FT(0)}, c, b);
     if(!(v0 < v1))
       return;
@@ -599,7 +658,7 @@ private:
     child.b0 = v0 * len;
     child.b1 = v1 * len;
     child.source = to_neighbour_frame(w.source, c, b - c, len);
-    if(w.b0 < x) // line 22: the child's b0 ray grazes c
+    if(grazes_c) // line 22: the child's b0 ray grazes c
       update_relay(child, child.relay_left, length(c - w.source));
     add_window(right, child);
   }
