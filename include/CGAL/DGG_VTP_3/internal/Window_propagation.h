@@ -306,14 +306,16 @@ private:
     FT best_distance = infinity();
     FT best_crossing = FT(0);
     const Win* best = nullptr;
-    m_crossings.resize(m_buffer.size());
+    m_toward_apex.resize(m_buffer.size());
     for(std::size_t i = 0; i < m_buffer.size(); ++i)
     {
       const Win& w = m_buffer[i];
-      const FT x = m_crossings[i] = x_axis_crossing(w.source, c);
+      Toward_apex& t = m_toward_apex[i];
+      const FT x = t.crossing = x_axis_crossing(w.source, c);
+      t.distance = infinity();
       if(w.b0 <= x && x <= w.b1)
       {
-        const FT d = w.distance_to(c);
+        const FT d = t.distance = w.distance_to(c);
         if(d < best_distance)
         {
           best_distance = d;
@@ -337,16 +339,25 @@ private:
     for(std::size_t i = 0; i < m_buffer.size(); ++i)
     {
       const Win& w = m_buffer[i];
-      const FT x = m_crossings[i];
+      const FT x = m_toward_apex[i].crossing;
       Sides keep{w.b1, w.b0};
       if(best != nullptr && &w != best)
-        keep = sides(w, x, c, *best, best_crossing, best_distance);
+        keep = sides(w, m_toward_apex[i], c, *best, best_crossing, best_distance);
       if(left != Mesh::no_halfedge && w.b0 < (std::min)(x, keep.left_end))
         add_left_child(h, c, w, x, keep.left_end, left);
       if(right != Mesh::no_halfedge && (std::max)(x, keep.right_start) < w.b1)
         add_right_child(h, c, w, x, keep.right_start, right);
     }
   }
+
+  // A window of the list being propagated seen from the apex: where its ray to the apex crosses the
+  // edge, and its distance to the apex along that ray if the crossing lies in its interval (+inf:
+  // it does not light the apex)
+  struct Toward_apex
+  {
+    FT crossing;
+    FT distance;
+  };
 
   // The part of w's interval whose rays may still go left of the apex c (those up to `left_end`)
   // and right of it (from `right_start` on), given the best window B to c.
@@ -367,11 +378,16 @@ private:
   // accuracy unless w is clearly worse: by more than the bound's relative tolerance; otherwise
   // only the classic rule applies, a window lighting c wholly on one side of B's crossing keeps
   // only its child on that side.
-  Sides sides(const Win& w, FT x, const Point& c, const Win& best, FT best_crossing, FT best_distance) const
+  Sides sides(const Win& w, const Toward_apex& t, const Point& c, const Win& best, FT best_crossing,
+              FT best_distance) const
   {
-    const bool lights_apex = w.b0 <= x && x <= w.b1;
-    const FT end = x < w.b0 ? w.b0 : w.b1;
-    const FT to_c = lights_apex ? w.distance_to(c) : w.distance_to_base_point(end) + length(c - Point{end, FT(0)});
+    const bool lights_apex = t.distance < infinity();
+    FT to_c = t.distance;
+    if(!lights_apex)
+    {
+      const FT end = t.crossing < w.b0 ? w.b0 : w.b1;
+      to_c = w.distance_to_base_point(end) + length(c - Point{end, FT(0)});
+    }
     Sides keep{w.b1, w.b0};
     if(to_c >= best_distance * (FT(1) + m_bound_epsilon))
     {
@@ -685,7 +701,7 @@ private:
   std::deque<Index> m_fifo;           // FIFO F of window lists to propagate
   std::vector<Win> m_buffer;          // the window list being propagated
   std::vector<FT> m_starts;           // its windows' starts, sorted, before pairwise trimming
-  std::vector<FT> m_crossings;        // where each of its windows' ray to the apex crosses the edge
+  std::vector<Toward_apex> m_toward_apex; // per window of that list, see Toward_apex
   Propagation_statistics m_stats;
 };
 
