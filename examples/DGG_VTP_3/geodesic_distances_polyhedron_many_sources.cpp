@@ -4,7 +4,10 @@
 // Author(s): DGG-VTP for CGAL team
 //
 // One Geodesic_distance_solver, prepared once for a plain Polyhedron_3 (no vertex ids to
-// initialise), queried for several sources; the distances go to a boost::unordered_map.
+// initialise), queried for several sources at once: one distance field per source, each in a
+// boost::unordered_map. With Parallel_if_available_tag the sources are shared among TBB's threads
+// when the program is linked with TBB (CGAL::TBB_support), and computed one after the other
+// otherwise; the distances are the same either way.
 
 #include <CGAL/DGG_VTP_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -41,31 +44,34 @@ int main(int argc, char** argv)
   // the intrinsic geometry is computed once, here ...
   const Solver solver(mesh);
 
-  boost::unordered_map<vertex_descriptor, double> distance_storage;
-  boost::associative_property_map<boost::unordered_map<vertex_descriptor, double> >
-    distance(distance_storage);
-
   // ... and reused by every query: three sources spread over the vertex range
   const std::size_t n = num_vertices(mesh);
   std::vector<vertex_descriptor> sources;
   for(std::size_t k = 0; k < 3; ++k)
     sources.push_back(*std::next(vertices(mesh).begin(), k * n / 3));
 
-  for(vertex_descriptor source : sources)
-  {
-    const CGAL::DGG_VTP_3::Propagation_statistics stats = solver.compute_distances(source, distance);
+  using Storage = boost::unordered_map<vertex_descriptor, double>;
+  std::vector<Storage> storage(sources.size());
+  std::vector<boost::associative_property_map<Storage> > distances;
+  for(Storage& s : storage)
+    distances.emplace_back(s);
 
+  const std::vector<CGAL::DGG_VTP_3::Propagation_statistics> statistics =
+    solver.compute_distances_from_each_source<CGAL::Parallel_if_available_tag>(sources, distances);
+
+  for(std::size_t k = 0; k < sources.size(); ++k)
+  {
     double sum = 0., max_distance = 0.;
     for(vertex_descriptor v : vertices(mesh))
     {
-      sum += get(distance, v);
-      max_distance = (std::max)(max_distance, get(distance, v));
+      sum += get(distances[k], v);
+      max_distance = (std::max)(max_distance, get(distances[k], v));
     }
-    std::cout << "source at (" << source->point() << "): mean distance " << sum / n
-              << ", max distance " << max_distance << ", " << stats.vertices_reached
-              << " vertices reached, " << stats.windows_created << " windows" << std::endl;
+    std::cout << "source at (" << sources[k]->point() << "): mean distance " << sum / n
+              << ", max distance " << max_distance << ", " << statistics[k].vertices_reached
+              << " vertices reached, " << statistics[k].windows_created << " windows" << std::endl;
 
-    if(get(distance, source) != 0. || !(max_distance > 0.))
+    if(get(distances[k], sources[k]) != 0. || !(max_distance > 0.))
       return EXIT_FAILURE;
   }
 

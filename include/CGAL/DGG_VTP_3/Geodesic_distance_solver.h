@@ -15,10 +15,17 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/property_map.h>
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
 
 #include <boost/graph/graph_traits.hpp>
 
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -131,32 +138,107 @@ public:
                                                              VertexDistanceMap distances,
                                                              const NamedParameters& np = parameters::default_values()) const
   {
+    const Computation_FT accuracy = checked_accuracy(np);
+    const std::vector<Index> indices = checked_indices(sources);
+    if(indices.empty())
+      throw std::invalid_argument("no source given");
+    return propagate(indices, accuracy, distances);
+  }
+
+  /*!
+   * computes the geodesic distances from each source of `sources` to every vertex, one propagation
+   * per source: those of `sources[k]` go into `distance_maps[k]`. Each is the propagation of
+   * `compute_distances()`, so the distances are the same bit for bit whatever the concurrency tag
+   * and the number of threads.
+   *
+   * \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` (the sources are shared
+   *         among TBB's threads; needs `CGAL_LINKED_WITH_TBB`) or `CGAL::Parallel_if_available_tag`
+   * \tparam VertexRange a range of `vertex_descriptor`
+   * \tparam VertexDistanceMapRange a random access range of writable vertex property maps with value
+   *         type `FT`, as many as sources; with `Parallel_tag` they are written at the same time,
+   *         so two of them must not share their storage
+   * \returns what each propagation did, in the order of `sources`
+   * \throws std::invalid_argument before any propagation if an element of `sources` is not a
+   *         vertex of the mesh, if the two ranges differ in size, or if the accuracy is negative or
+   *         not finite. No source: nothing is done.
+   */
+  template <class ConcurrencyTag, class VertexRange, class VertexDistanceMapRange,
+            class NamedParameters = parameters::Default_named_parameters>
+  std::vector<Propagation_statistics>
+  compute_distances_from_each_source(const VertexRange& sources,
+                                     const VertexDistanceMapRange& distance_maps,
+                                     const NamedParameters& np = parameters::default_values()) const
+  {
+    constexpr bool parallel = std::is_convertible<ConcurrencyTag, Parallel_tag>::value;
+#ifndef CGAL_LINKED_WITH_TBB
+    static_assert(!parallel, "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+    const Computation_FT accuracy = checked_accuracy(np);
+    const std::vector<Index> indices = checked_indices(sources);
+    if(indices.size() != static_cast<std::size_t>(std::distance(std::begin(distance_maps), std::end(distance_maps))))
+      throw std::invalid_argument("one distance map per source is needed");
+
+    std::vector<Propagation_statistics> statistics(indices.size());
+    const auto propagate_from = [&](std::size_t k) {
+      statistics[k] = propagate(std::vector<Index>(1, indices[k]), accuracy, *(std::begin(distance_maps) + k));
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if constexpr(parallel)
+    {
+      // one source per task: a propagation is long enough to pay for its scheduling
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, indices.size(), 1),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          for(std::size_t k = range.begin(); k != range.end(); ++k)
+                            propagate_from(k);
+                        });
+      return statistics;
+    }
+#endif
+    for(std::size_t k = 0; k < indices.size(); ++k)
+      propagate_from(k);
+    return statistics;
+  }
+
+  std::size_t number_of_vertices() const { return m_vertices.size(); }
+
+private:
+  using Index = typename Mesh::Index;
+
+  template <class NamedParameters>
+  static Computation_FT checked_accuracy(const NamedParameters& np)
+  {
     const double accuracy = parameters::choose_parameter(parameters::get_parameter(np, internal_np::accuracy), 0.);
     if(!(accuracy >= 0.) || !std::isfinite(accuracy))
       throw std::invalid_argument("the accuracy must be a finite number >= 0");
+    return Computation_FT(accuracy);
+  }
 
-    std::vector<typename Mesh::Index> indices;
+  template <class VertexRange>
+  std::vector<Index> checked_indices(const VertexRange& sources) const
+  {
+    std::vector<Index> indices;
     for(vertex_descriptor v : sources)
     {
       const std::size_t i = static_cast<std::size_t>(get(m_vim, v));
       if(i >= m_vertices.size() || m_vertices[i] != v)
         throw std::invalid_argument("the source is not a vertex of the mesh");
-      indices.push_back(static_cast<typename Mesh::Index>(i));
+      indices.push_back(static_cast<Index>(i));
     }
-    if(indices.empty())
-      throw std::invalid_argument("no source given");
+    return indices;
+  }
 
-    internal::Window_propagation<Computation_FT> propagation(m_mesh, Computation_FT(accuracy));
-    propagation.run(indices);
+  template <class VertexDistanceMap>
+  Propagation_statistics propagate(const std::vector<Index>& sources, Computation_FT accuracy,
+                                   VertexDistanceMap distances) const
+  {
+    internal::Window_propagation<Computation_FT> propagation(m_mesh, accuracy);
+    propagation.run(sources);
     const std::vector<Computation_FT>& d = propagation.distances();
     for(std::size_t i = 0; i < m_vertices.size(); ++i)
       put(distances, m_vertices[i], FT(d[i]));
     return propagation.statistics();
   }
 
-  std::size_t number_of_vertices() const { return m_vertices.size(); }
-
-private:
   Vertex_index_map m_vim;                    // user's vertex -> internal index
   Mesh m_mesh;                               // intrinsic geometry and combinatorics
   std::vector<vertex_descriptor> m_vertices; // internal index -> user's vertex

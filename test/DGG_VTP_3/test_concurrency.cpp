@@ -1,0 +1,148 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+// compute_distances_from_each_source: one field per source, with Sequential_tag and, when this
+// executable is linked with TBB, Parallel_tag on 1, 2 and 4 threads (more threads than cores is
+// the point: the sources must be shared out differently and give the same fields).
+
+#include "test_utilities.h"
+
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <cstring>
+#include <type_traits>
+
+using namespace dggvtp_test;
+
+namespace {
+
+template <class Mesh>
+using Field_map = typename boost::property_map<Mesh, CGAL::dynamic_vertex_property_t<typename Distance_map<Mesh>::FT>>::const_type;
+
+template <class Mesh>
+std::vector<Field_map<Mesh>> fresh_maps(const Mesh& mesh, std::size_t count)
+{
+  std::vector<Field_map<Mesh>> maps;
+  for(std::size_t k = 0; k < count; ++k)
+  {
+    maps.push_back(get(CGAL::dynamic_vertex_property_t<typename Distance_map<Mesh>::FT>(), mesh));
+    for(auto v : vertices(mesh))
+      put(maps.back(), v, typename Distance_map<Mesh>::FT(-1));
+  }
+  return maps;
+}
+
+// the same bits, not merely the same values (a NaN or a -0 would hide behind ==)
+template <class FT>
+bool same_bits(FT a, FT b) { return std::memcmp(&a, &b, sizeof(FT)) == 0; }
+
+// every field of `each_source` (and its statistics) is, bit for bit, the one of the single query
+template <class ConcurrencyTag, class Mesh, class Solver>
+void check_against_single_queries(const Mesh& mesh, const Solver& solver,
+                                  const std::vector<Vertex<Mesh>>& sources, double accuracy,
+                                  const std::string& what)
+{
+  const auto np = CGAL::parameters::accuracy(accuracy);
+  const std::vector<Field_map<Mesh>> maps = fresh_maps(mesh, sources.size());
+  const std::vector<CGAL::DGG_VTP_3::Propagation_statistics> statistics =
+    solver.template compute_distances_from_each_source<ConcurrencyTag>(sources, maps, np);
+  BOOST_REQUIRE_EQUAL(statistics.size(), sources.size());
+
+  std::size_t differences = 0;
+  for(std::size_t k = 0; k < sources.size(); ++k)
+  {
+    const Field_map<Mesh> single = fresh_maps(mesh, 1).front();
+    const CGAL::DGG_VTP_3::Propagation_statistics s = solver.compute_distances(sources[k], single, np);
+    BOOST_TEST(statistics[k].windows_created == s.windows_created, what << ", source " << k);
+    BOOST_TEST(statistics[k].vertices_popped == s.vertices_popped, what << ", source " << k);
+    for(auto v : vertices(mesh))
+      if(!same_bits(get(maps[k], v), get(single, v)))
+        ++differences;
+    BOOST_TEST(get(maps[k], sources[k]) == 0., what << ", source " << k);
+  }
+  BOOST_TEST(differences == 0u, what << ": " << differences << " distances differ from the single queries");
+}
+
+template <class Mesh>
+std::vector<Vertex<Mesh>> spread_sources(const Mesh& mesh, std::size_t count)
+{
+  const std::vector<Vertex<Mesh>> all = vertex_list(mesh);
+  std::vector<Vertex<Mesh>> sources;
+  for(std::size_t k = 0; k < count; ++k)
+    sources.push_back(all[k * all.size() / count]);
+  return sources;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(concurrency)
+
+BOOST_AUTO_TEST_CASE(parallel_if_available_follows_tbb)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  BOOST_TEST((std::is_same<CGAL::Parallel_if_available_tag, CGAL::Parallel_tag>::value));
+#else
+  BOOST_TEST((std::is_same<CGAL::Parallel_if_available_tag, CGAL::Sequential_tag>::value));
+#endif
+}
+
+// exact mode and DGG-VTP, on a mesh with border (pinion is closed; spot and lion_head are not)
+BOOST_AUTO_TEST_CASE_TEMPLATE(each_source_equals_single_queries, Config, All_configurations)
+{
+  using Mesh = typename Config::Mesh;
+  for(const char* name : {"pinion.ply", "lion_head.ply"})
+  {
+    const Mesh mesh = make_mesh<Mesh>(read_soup(name));
+    const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
+    const std::vector<Vertex<Mesh>> sources = spread_sources(mesh, 5);
+    for(double accuracy : {0., 1e-5})
+    {
+      const std::string what = std::string(name) + ", " + config_name<Config>() + ", accuracy " + std::to_string(accuracy);
+      check_against_single_queries<CGAL::Sequential_tag>(mesh, solver, sources, accuracy, what + ", sequential");
+#ifdef CGAL_LINKED_WITH_TBB
+      for(int threads : {1, 2, 4})
+      {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        check_against_single_queries<CGAL::Parallel_tag>(mesh, solver, sources, accuracy,
+                                                         what + ", " + std::to_string(threads) + " threads");
+      }
+#endif
+    }
+  }
+}
+
+// the checks come before any propagation: nothing is written when one of them fails
+BOOST_AUTO_TEST_CASE(bad_arguments_are_refused_before_any_work)
+{
+  using Mesh = CGAL::Surface_mesh<Epick::Point_3>;
+  const Mesh mesh = make_mesh<Mesh>(read_soup("pinion.ply"));
+  const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
+  std::vector<Vertex<Mesh>> sources = spread_sources(mesh, 3);
+
+  const std::vector<Field_map<Mesh>> too_few = fresh_maps(mesh, 2);
+  BOOST_CHECK_THROW(solver.compute_distances_from_each_source<CGAL::Parallel_if_available_tag>(sources, too_few),
+                    std::invalid_argument);
+
+  sources.push_back(Mesh::Vertex_index(static_cast<Mesh::size_type>(num_vertices(mesh) + 7)));
+  const std::vector<Field_map<Mesh>> maps = fresh_maps(mesh, sources.size());
+  BOOST_CHECK_THROW(solver.compute_distances_from_each_source<CGAL::Parallel_if_available_tag>(sources, maps),
+                    std::invalid_argument);
+  sources.pop_back();
+  BOOST_CHECK_THROW(solver.compute_distances_from_each_source<CGAL::Parallel_if_available_tag>(
+                      sources, fresh_maps(mesh, sources.size()), CGAL::parameters::accuracy(-1e-6)),
+                    std::invalid_argument);
+  for(const Field_map<Mesh>& map : maps)
+    BOOST_TEST(get(map, sources.front()) == -1.);
+
+  const std::vector<Field_map<Mesh>> none;
+  BOOST_TEST(solver.compute_distances_from_each_source<CGAL::Parallel_if_available_tag>(
+               std::vector<Vertex<Mesh>>(), none).empty());
+}
+
+BOOST_AUTO_TEST_SUITE_END()
