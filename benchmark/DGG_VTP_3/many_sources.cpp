@@ -57,6 +57,12 @@ int main(int argc, char** argv)
     const double epsilon = std::stod(argv[3]);
     const int threads = std::stoi(argv[4]);
     const int repeat = (std::max)(1, std::stoi(argv[5]));
+    // TBB aborts on a parallelism of 0, and no source would time nothing
+    if(count == 0 || threads < 1)
+    {
+      std::cerr << "error: SOURCES and THREADS must be at least 1\n";
+      return 1;
+    }
 
     std::vector<vertex_descriptor> sources;
     for(std::size_t k = 0; k < count; ++k)
