@@ -211,11 +211,13 @@ case $case in
       if [ "$size" = '\0\0\0\3' ]; then expect_rc 0; expect_lines "$work/d.txt" 0 1 1; rm "$work/d.txt"
       else expect_input_error; fi
     done
-    # PLY: elements (one without properties: read a billion times over), and list sizes in text
-    # and binary, too large or negative
+    # PLY: elements (one without properties: read a billion times over, or 2^64 - 1 times, a count
+    # beyond long long that the fuzzer found), and list sizes in text and binary, too large or negative
     header='ply\nformat %s 1.0\nelement vertex %s\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list int int vertex_indices\n%bend_header\n'
     for variant in "ascii|3||0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n" "ascii|3||0 0 0\n1 0 0\n0 1 0\n-5 0 1 2\n" \
-                   "ascii|2000000000||0 0 0\n" "ascii|3|element nothing 1000000000000000000\n|0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"; do
+                   "ascii|2000000000||0 0 0\n" "ascii|3|element nothing 1000000000000000000\n|0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n" \
+                   "ascii|3|element nothing 18446744073709551615\n|0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n" \
+                   "ascii|3|element nothing -1\n|0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"; do
       IFS='|' read -r format count extra body <<< "$variant"
       printf "$header$body" "$format" "$count" "$extra" | input big.ply
       run "$work/big.ply" --output "$work/d.txt"; expect_input_error

@@ -433,12 +433,16 @@ inline void check_ply_declarations(const std::string& path)
       break;
     if(word == "element")
     {
+      // read as CGAL reads it, into a std::size_t: a count beyond long long (fuzzer: an element
+      // without properties, iterated for ever) or written negative (wrapped around) is refused
       Element e;
-      if(!(words >> e.name >> e.count))
+      std::size_t count;
+      if(!(words >> e.name >> count))
         return;
-      if(e.count < 0 || e.count > bytes)
-        throw Input_error("'" + path + "' declares " + std::to_string(e.count) + " elements '" + e.name +
+      if(count > static_cast<unsigned long long>(bytes))
+        throw Input_error("'" + path + "' declares " + std::to_string(count) + " elements '" + e.name +
                           "', more than its " + std::to_string(bytes) + " bytes can hold");
+      e.count = static_cast<long long>(count);
       elements.push_back(e);
     }
     else if(word == "property")
