@@ -17,6 +17,10 @@
 #include <sys/types.h>
 #include <unistd.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -27,6 +31,7 @@
 #include <iostream>
 #include <limits>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,8 +47,8 @@ Geodesic distances on the surface of a triangle mesh, from one vertex to every v
   --epsilon E            DGG-VTP with accuracy E >= 0: every distance within a relative error E
                          of the exact one (E = 0 is --exact)
   --precision P          double (default) or float
-  --threads T            number of threads, 0 = all cores (default 1; the propagation is
-                         sequential for now, T is recorded in the statistics)
+  --threads T            number of threads, 0 = all cores (default 1); the distances are the
+                         same bit for bit for any T (without TBB at build time: one thread)
   --output FILE          one line per vertex of the file, in the file's order: the distance
                          printed with %.17g, or inf if no path on the surface reaches it;
                          '-' writes to standard output
@@ -271,10 +276,17 @@ Run compute(dggvtp::Loaded_soup& soup, const Options& options)
   }();
 
   std::vector<typename Kernel::FT> d(solver.number_of_vertices());
+  const auto sources = dggvtp::mesh_vertices_of<typename Mesh::Vertex_index>(soup, options.source);
+  const auto np = CGAL::parameters::accuracy(options.epsilon);
   const Clock::time_point t1 = Clock::now();
-  run.statistics = solver.compute_distances_to_nearest_source(
-    dggvtp::mesh_vertices_of<typename Mesh::Vertex_index>(soup, options.source), CGAL::make_property_map(d),
-    CGAL::parameters::accuracy(options.epsilon));
+  // the distances are the same bit for bit on any number of threads (and without TBB)
+#ifdef CGAL_LINKED_WITH_TBB
+  std::optional<tbb::global_control> limit;
+  if(options.threads > 0)
+    limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
+#endif
+  run.statistics = solver.template compute_distances_to_nearest_source<CGAL::Parallel_if_available_tag>(
+    sources, CGAL::make_property_map(d), np);
   run.seconds_propagate = seconds_since(t1);
   run.distances = dggvtp::file_vertex_distances(soup, d);
   return run;
@@ -351,6 +363,10 @@ int run_main(int argc, char** argv)
   if(!options.quiet)
     for(const std::string& repair : soup.repairs)
       std::cerr << "warning: " << options.mesh << ": " << repair << "\n";
+#ifndef CGAL_LINKED_WITH_TBB
+  if(!options.quiet && options.threads != 1)
+    std::cerr << "warning: dggvtp was built without TBB: the propagation ran on one thread\n";
+#endif
 
   if(!options.output.empty())
     write_distances(run.distances, options.output);

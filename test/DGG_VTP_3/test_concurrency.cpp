@@ -3,9 +3,11 @@
 //
 // Author(s): DGG-VTP for CGAL team
 
-// compute_distances_from_each_source: one field per source, with Sequential_tag and, when this
-// executable is linked with TBB, Parallel_tag on 1, 2 and 4 threads (more threads than cores is
-// the point: the sources must be shared out differently and give the same fields).
+// The concurrency tags: compute_distances (one propagation, its patches shared among threads) and
+// compute_distances_from_each_source (one field per source, the sources shared among threads),
+// with Sequential_tag and, when this executable is linked with TBB, Parallel_tag on 1, 2 and 4
+// threads (more threads than cores is the point: the work must be shared out differently and
+// give the same bits).
 
 #include "test_utilities.h"
 
@@ -131,6 +133,58 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(each_source_equals_single_queries, Config, All_con
         const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
         check_against_single_queries<CGAL::Parallel_tag>(mesh, solver, sources, accuracy, single,
                                                          what + ", " + std::to_string(threads) + " threads");
+      }
+#endif
+    }
+  }
+}
+
+// One propagation: Parallel_tag gives the distances and statistics of Sequential_tag, bit for bit,
+// for any number of threads. The meshes have 8 (lion_head) and 36 (bunny) patches of faces, so
+// that windows, distances and faces entering the region cross from patch to patch; the results
+// stay within the accuracy of the exact mode's.
+BOOST_AUTO_TEST_CASE_TEMPLATE(one_propagation_is_the_same_for_any_thread_count, Config, All_configurations)
+{
+  using Mesh = typename Config::Mesh;
+  using FT = typename Distance_map<Mesh>::FT;
+  for(const char* name : {"lion_head.ply", "bunny.ply"})
+  {
+    const Mesh mesh = make_mesh<Mesh>(read_soup(name));
+    const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
+    const Vertex<Mesh> source = spread_sources(mesh, 3)[1];
+    const Field_map<Mesh> exact = fresh_maps(mesh, 1).front();
+    solver.compute_distances(source, exact);
+    for(double accuracy : {0., 1e-6})
+    {
+      const std::string what = std::string(name) + ", " + config_name<Config>() + ", accuracy " + std::to_string(accuracy);
+      const Field_map<Mesh> sequential = fresh_maps(mesh, 1).front();
+      const CGAL::DGG_VTP_3::Propagation_statistics expected =
+        solver.template compute_distances<CGAL::Sequential_tag>(source, sequential, CGAL::parameters::accuracy(accuracy));
+      // within the accuracy of the exact mode (float results: rounded to float)
+      const double slack = std::is_same<FT, float>::value ? 1e-6 : 1e-12;
+      std::size_t outside = 0;
+      for(auto v : vertices(mesh))
+      {
+        const double e = double(get(exact, v)), d = double(get(sequential, v));
+        if(!(d >= e * (1. - slack) && d <= e * (1. + accuracy + slack)))
+          ++outside;
+      }
+      BOOST_TEST(outside == 0u, what << ": " << outside << " distances outside the accuracy");
+#ifdef CGAL_LINKED_WITH_TBB
+      for(int threads : {1, 2, 4})
+      {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        const Field_map<Mesh> parallel = fresh_maps(mesh, 1).front();
+        const CGAL::DGG_VTP_3::Propagation_statistics statistics =
+          solver.template compute_distances<CGAL::Parallel_tag>(source, parallel, CGAL::parameters::accuracy(accuracy));
+        std::size_t differences = 0;
+        for(auto v : vertices(mesh))
+          if(!same_bits(get(parallel, v), get(sequential, v)))
+            ++differences;
+        BOOST_TEST(differences == 0u, what << ", " << threads << " threads: " << differences << " distances differ");
+        BOOST_TEST(statistics.windows_created == expected.windows_created, what << ", " << threads << " threads");
+        BOOST_TEST(statistics.windows_peak == expected.windows_peak, what << ", " << threads << " threads");
+        BOOST_TEST(statistics.vertices_popped == expected.vertices_popped, what << ", " << threads << " threads");
       }
 #endif
     }

@@ -142,6 +142,15 @@ case $case in
       paste "$work/approx.txt" "$work/exact.txt" | awk -v e=$e '$2 > 0 { r = ($1 - $2) / $2; if (r > e || r < -1e-12) { print NR, r; bad = 1 } } END { exit bad }' \
         || fail "epsilon $e: a distance outside the contract"
     done ;;
+  threads_give_the_same_bytes)  # lion_head: 8 patches of faces, whatever the number of threads
+    for mode in --exact "--epsilon 1e-6"; do
+      for t in 1 2 0; do
+        run "$meshes/lion_head.ply" --quiet $mode --threads $t --output "$work/d$t.txt" --stats "$work/s$t.json"; expect_rc 0
+        grep -q "\"threads\": $t," "$work/s$t.json" || fail "stats: threads is not $t"
+      done
+      cmp -s "$work/d1.txt" "$work/d2.txt" || fail "$mode: --threads 2 differs from --threads 1"
+      cmp -s "$work/d1.txt" "$work/d0.txt" || fail "$mode: --threads 0 differs from --threads 1"
+    done ;;
   float_precision)
     run "$spot" --quiet --output "$work/double.txt"; expect_rc 0
     run "$spot" --quiet --precision float --output "$work/float.txt"; expect_rc 0

@@ -9,6 +9,7 @@
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
+#include <CGAL/DGG_VTP_3/internal/for_each_index.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Named_function_parameters.h>
@@ -16,11 +17,6 @@
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/property_map.h>
 #include <CGAL/tags.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -107,6 +103,12 @@ public:
    * `distances`. Vertices that no path on the surface reaches (other connected components,
    * isolated vertices) get `+infinity`.
    *
+   * \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` (the
+   *         propagation runs in rounds over fixed patches of faces, and the patches of a round are
+   *         shared among TBB's threads; needs `CGAL_LINKED_WITH_TBB`) or
+   *         `CGAL::Parallel_if_available_tag`. The distances and statistics are the same bit for
+   *         bit whatever the tag and the number of threads. With an `FT` other than `float` and
+   *         `double` (exact number types are not thread-safe), one thread does the work.
    * \param source_vertex a vertex of the mesh given to the constructor
    * \param distances a writable vertex property map with value type `FT`
    * \param np an optional sequence of named parameters:
@@ -117,22 +119,25 @@ public:
    * \throws std::invalid_argument if `source_vertex` is not a vertex of the mesh or the accuracy
    *         is negative or not finite.
    */
-  template <class VertexDistanceMap, class NamedParameters = parameters::Default_named_parameters>
+  template <class ConcurrencyTag = Sequential_tag, class VertexDistanceMap,
+            class NamedParameters = parameters::Default_named_parameters>
   Propagation_statistics compute_distances(vertex_descriptor source_vertex,
                                            VertexDistanceMap distances,
                                            const NamedParameters& np = parameters::default_values()) const
   {
-    return compute_distances_to_nearest_source(std::vector<vertex_descriptor>(1, source_vertex), distances, np);
+    return compute_distances_to_nearest_source<ConcurrencyTag>(std::vector<vertex_descriptor>(1, source_vertex),
+                                                               distances, np);
   }
 
   /*!
    * the same with several sources: the distance of each vertex to the nearest of them.
    *
+   * \tparam ConcurrencyTag as for `compute_distances()`
    * \tparam VertexRange a range of `vertex_descriptor`
    * \throws std::invalid_argument if `sources` is empty or has an element that is not a vertex of
    *         the mesh, or if the accuracy is negative or not finite.
    */
-  template <class VertexRange, class VertexDistanceMap,
+  template <class ConcurrencyTag = Sequential_tag, class VertexRange, class VertexDistanceMap,
             class NamedParameters = parameters::Default_named_parameters>
   Propagation_statistics compute_distances_to_nearest_source(const VertexRange& sources,
                                                              VertexDistanceMap distances,
@@ -142,7 +147,7 @@ public:
     const std::vector<Index> indices = checked_indices(sources);
     if(indices.empty())
       throw std::invalid_argument("no source given");
-    return propagate(indices, accuracy, distances);
+    return propagate<ConcurrencyTag>(indices, accuracy, distances);
   }
 
   /*!
@@ -152,7 +157,9 @@ public:
    * and the number of threads.
    *
    * \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` (the sources are shared
-   *         among TBB's threads; needs `CGAL_LINKED_WITH_TBB`) or `CGAL::Parallel_if_available_tag`
+   *         among TBB's threads, each propagation runs on one thread; needs
+   *         `CGAL_LINKED_WITH_TBB`; one thread with an `FT` other than `float` and `double`) or
+   *         `CGAL::Parallel_if_available_tag`
    * \tparam VertexRange a range of `vertex_descriptor`
    * \tparam VertexDistanceMapRange a random access range of writable vertex property maps with value
    *         type `FT`, as many as sources; with `Parallel_tag` they are written at the same time,
@@ -169,33 +176,19 @@ public:
                                      const VertexDistanceMapRange& distance_maps,
                                      const NamedParameters& np = parameters::default_values()) const
   {
-    constexpr bool parallel = std::is_convertible<ConcurrencyTag, Parallel_tag>::value;
-#ifndef CGAL_LINKED_WITH_TBB
-    static_assert(!parallel, "Parallel_tag is enabled but TBB is unavailable.");
-#endif
     const Computation_FT accuracy = checked_accuracy(np);
     const std::vector<Index> indices = checked_indices(sources);
     if(indices.size() != static_cast<std::size_t>(std::distance(std::begin(distance_maps), std::end(distance_maps))))
       throw std::invalid_argument("one distance map per source is needed");
 
     std::vector<Propagation_statistics> statistics(indices.size());
-    const auto propagate_from = [&](std::size_t k) {
-      statistics[k] = propagate(std::vector<Index>(1, indices[k]), accuracy, *(std::begin(distance_maps) + k));
-    };
-#ifdef CGAL_LINKED_WITH_TBB
-    if constexpr(parallel)
-    {
-      // one source per task: a propagation is long enough to pay for its scheduling
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, indices.size(), 1),
-                        [&](const tbb::blocked_range<std::size_t>& range) {
-                          for(std::size_t k = range.begin(); k != range.end(); ++k)
-                            propagate_from(k);
-                        });
-      return statistics;
-    }
+#ifndef CGAL_LINKED_WITH_TBB
+    static_assert(!internal::is_parallel<ConcurrencyTag>(), "Parallel_tag is enabled but TBB is unavailable.");
 #endif
-    for(std::size_t k = 0; k < indices.size(); ++k)
-      propagate_from(k);
+    internal::for_each_index<Effective_tag<ConcurrencyTag>>(indices.size(), [&](std::size_t k) {
+      statistics[k] = propagate<Sequential_tag>(std::vector<Index>(1, indices[k]), accuracy,
+                                                *(std::begin(distance_maps) + k));
+    });
     return statistics;
   }
 
@@ -227,12 +220,21 @@ private:
     return indices;
   }
 
-  template <class VertexDistanceMap>
+  // Exact number types share their representations between copies without locking them, and
+  // the mesh's lengths are copied into every window: with those, one thread does all the work.
+  template <class ConcurrencyTag>
+  using Effective_tag = typename std::conditional<std::is_floating_point<Computation_FT>::value,
+                                                  ConcurrencyTag, Sequential_tag>::type;
+
+  template <class ConcurrencyTag, class VertexDistanceMap>
   Propagation_statistics propagate(const std::vector<Index>& sources, Computation_FT accuracy,
                                    VertexDistanceMap distances) const
   {
+#ifndef CGAL_LINKED_WITH_TBB
+    static_assert(!internal::is_parallel<ConcurrencyTag>(), "Parallel_tag is enabled but TBB is unavailable.");
+#endif
     internal::Window_propagation<Computation_FT> propagation(m_mesh, accuracy);
-    propagation.run(sources);
+    propagation.template run<Effective_tag<ConcurrencyTag>>(sources);
     const std::vector<Computation_FT>& d = propagation.distances();
     for(std::size_t i = 0; i < m_vertices.size(); ++i)
       put(distances, m_vertices[i], FT(d[i]));

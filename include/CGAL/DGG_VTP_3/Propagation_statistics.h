@@ -17,7 +17,7 @@ namespace DGG_VTP_3 {
 struct Propagation_statistics
 {
   std::size_t windows_created = 0;  ///< windows stored in a window list, in total
-  std::size_t windows_peak = 0;     ///< largest number of windows alive at the same time
+  std::size_t windows_peak = 0;     ///< largest number of windows alive at the same time (an upper bound: over the propagation's rounds, the sum of each patch's largest number in the round)
   std::size_t pseudo_sources = 0;   ///< vertices that emitted windows (the source included)
   std::size_t vertices_popped = 0;  ///< vertices taken from the priority queue (a vertex whose distance drops after being popped counts again)
   std::size_t vertices_reached = 0; ///< vertices with a finite distance

@@ -17,6 +17,8 @@ namespace DGG_VTP_3 {
  * One-shot form of `Geodesic_distance_solver`: prepares the mesh and answers one query, with the
  * same named parameters and the same defaults (it is written in terms of the class).
  *
+ * \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
+ *         `CGAL::Parallel_if_available_tag`, as for `Geodesic_distance_solver::compute_distances()`
  * \param tm a triangle mesh, model of `FaceListGraph` and `HalfedgeListGraph`
  * \param source_vertex the source vertex
  * \param distances a writable vertex property map with the traits' `FT` as value type;
@@ -24,7 +26,7 @@ namespace DGG_VTP_3 {
  * \param np optional named parameters: `vertex_point_map`, `geom_traits`, `vertex_index_map`,
  *        `face_index_map`, `accuracy`
  */
-template <class TriangleMesh, class VertexDistanceMap,
+template <class ConcurrencyTag = Sequential_tag, class TriangleMesh, class VertexDistanceMap,
           class NamedParameters = parameters::Default_named_parameters>
 Propagation_statistics
 compute_geodesic_distances(const TriangleMesh& tm,
@@ -35,7 +37,7 @@ compute_geodesic_distances(const TriangleMesh& tm,
   using Traits = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
   using Vertex_index_map = typename GetInitializedVertexIndexMap<TriangleMesh, NamedParameters>::const_type;
   const Geodesic_distance_solver<TriangleMesh, Traits, Vertex_index_map> solver(tm, np);
-  return solver.compute_distances(source_vertex, distances, np);
+  return solver.template compute_distances<ConcurrencyTag>(source_vertex, distances, np);
 }
 
 } // namespace DGG_VTP_3

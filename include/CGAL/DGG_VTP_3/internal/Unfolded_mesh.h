@@ -19,6 +19,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -77,6 +79,8 @@ public:
 
   // fills the mesh from a user's triangle mesh (a free function: the graph's next(), source()...
   // would be hidden inside the class by the members of the same names)
+  template <class FT_>
+  friend void reorder_faces(const std::vector<std::uint32_t>& order, Unfolded_mesh<FT_>& out);
   template <class FT_, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
             class GeomTraits>
   friend void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
@@ -107,6 +111,80 @@ inline std::string to_short_string(double x)
   char buffer[32];
   std::snprintf(buffer, sizeof(buffer), "%.3g", x);
   return buffer;
+}
+
+// Faces along a Z-order (Morton) curve of their centroids: faces near each other in the order are
+// near each other on the surface, so that the propagation's working set is a few compact blocks of
+// memory whatever the order of the user's faces, and a range of faces is a compact patch.
+template <class FT>
+std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
+                                                const std::vector<std::uint32_t>& corner_vertex)
+{
+  const std::size_t nf = corner_vertex.size() / 3;
+  double low[3] = {0., 0., 0.}, extent = 0.;
+  for(int c = 0; c < 3; ++c)
+  {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for(std::uint32_t v : corner_vertex)
+    {
+      lo = (std::min)(lo, CGAL::to_double(xyz[3 * v + c]));
+      hi = (std::max)(hi, CGAL::to_double(xyz[3 * v + c]));
+    }
+    low[c] = lo;
+    extent = (std::max)(extent, hi - lo);
+  }
+  // 21 bits a coordinate, interleaved
+  const auto spread = [](std::uint64_t x) {
+    x &= 0x1fffff;
+    x = (x | x << 32) & 0x1f00000000ffffULL;
+    x = (x | x << 16) & 0x1f0000ff0000ffULL;
+    x = (x | x << 8) & 0x100f00f00f00f00fULL;
+    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+    x = (x | x << 2) & 0x1249249249249249ULL;
+    return x;
+  };
+  const double scale = extent > 0. && std::isfinite(extent) ? double((1 << 21) - 1) / extent : 0.;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    std::uint64_t key = 0;
+    for(int c = 0; c < 3; ++c)
+    {
+      double centroid = 0.;
+      for(int k = 0; k < 3; ++k)
+        centroid += CGAL::to_double(xyz[3 * corner_vertex[3 * f + k] + c]) / 3.;
+      const double cell = (std::min)((std::max)((centroid - low[c]) * scale, 0.), double((1 << 21) - 1));
+      key |= spread(std::uint64_t(cell)) << c;
+    }
+    keys[f] = {key, std::uint32_t(f)};
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::uint32_t> order(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+    order[f] = keys[f].second;
+  return order;
+}
+
+// renumbers the faces: new face i is the user's face order[i] (the corners' vertices and the
+// opposite halfedges, the only per-face data so far)
+template <class FT>
+void reorder_faces(const std::vector<std::uint32_t>& order, Unfolded_mesh<FT>& out)
+{
+  using Index = typename Unfolded_mesh<FT>::Index;
+  const std::size_t nf = order.size();
+  std::vector<Index> new_face(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+    new_face[order[f]] = Index(f);
+  std::vector<Index> corner_vertex(3 * nf), opposite(3 * nf);
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      corner_vertex[3 * f + k] = out.m_corner_vertex[3 * order[f] + k];
+      const Index h = out.m_opposite[3 * order[f] + k];
+      opposite[3 * f + k] = h == Unfolded_mesh<FT>::no_halfedge ? h : 3 * new_face[h / 3] + h % 3;
+    }
+  out.m_corner_vertex.swap(corner_vertex);
+  out.m_opposite.swap(opposite);
 }
 
 template <class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
@@ -176,15 +254,20 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
     }
   }
 
+  const std::vector<Index> order = faces_in_space_order(xyz, out.m_corner_vertex);
+  reorder_faces(order, out);
+
   // unfold each triangle onto each of its three edges; the area comes from the two shortest edges
+  // (errors name the face by the user's index)
   for(std::size_t fi = 0; fi < nf; ++fi)
   {
+    const std::size_t user_face = order[fi];
     FT p[3][3];
     for(int k = 0; k < 3; ++k)
       for(int c = 0; c < 3; ++c)
         p[k][c] = xyz[3 * out.m_corner_vertex[3 * fi + k] + c];
-    const auto degenerate = [fi] {
-      return std::invalid_argument("face " + std::to_string(fi) + " is degenerate (zero length edge or zero area)");
+    const auto degenerate = [user_face] {
+      return std::invalid_argument("face " + std::to_string(user_face) + " is degenerate (zero length edge or zero area)");
     };
     FT twice_area(0), longest(0);
     for(int k = 0; k < 3; ++k)
@@ -217,7 +300,7 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
       throw degenerate();
     // longest / height on it = longest^2 / (2 area)
     if(longest > max_sliver_ratio<FT>() * (twice_area / longest))
-      throw std::invalid_argument("face " + std::to_string(fi) + " is a sliver: an edge " +
+      throw std::invalid_argument("face " + std::to_string(user_face) + " is a sliver: an edge " +
                                   to_short_string(CGAL::to_double(longest * longest / twice_area)) +
                                   " times longer than the height on it (at most " +
                                   to_short_string(CGAL::to_double(max_sliver_ratio<FT>())) + " is accepted)");

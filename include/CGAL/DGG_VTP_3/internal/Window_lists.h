@@ -78,9 +78,22 @@ public:
 
   std::size_t created() const { return m_created; }
   std::size_t peak() const { return m_peak; }
+  // the peak from now on
+  void reset_peak() { m_peak = m_live; }
+
+  // gives the pool back once the wavefront has passed (a patch's lists stay empty afterwards)
+  void release_if_empty()
+  {
+    if(m_live != 0 || m_size == 0)
+      return;
+    m_window_blocks.clear();
+    m_next_blocks.clear();
+    m_size = 0;
+    m_free = nil;
+  }
 
 private:
-  static constexpr int block_bits = 12; // 4096 slots per block
+  static constexpr int block_bits = 10; // 1024 slots per block
   static constexpr Index block_mask = (Index(1) << block_bits) - 1;
   Window<FT>& window(Index i) { return m_window_blocks[i >> block_bits][i & block_mask]; }
   Index& next(Index i) { return m_next_blocks[i >> block_bits][i & block_mask]; }
