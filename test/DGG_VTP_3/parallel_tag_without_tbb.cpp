@@ -4,7 +4,8 @@
 // Author(s): DGG-VTP for CGAL team
 
 // Must NOT compile: Parallel_tag without TBB (CGAL_LINKED_WITH_TBB undefined) is a compile-time
-// error with a clear message, as in Polygon_mesh_processing (test parallel_tag_needs_tbb).
+// error with a clear message, as in Polygon_mesh_processing (tests parallel_tag_needs_tbb: the
+// many-sources query, and with DGG_VTP_3_ONE_PROPAGATION defined, a single propagation).
 
 #include <CGAL/DGG_VTP_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -19,6 +20,11 @@ int main()
   const Mesh mesh;
   const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
   const std::vector<Mesh::Vertex_index> sources;
+#ifdef DGG_VTP_3_ONE_PROPAGATION
+  std::vector<double> distances;
+  solver.compute_distances_to_nearest_source<CGAL::Parallel_tag>(sources, CGAL::make_property_map(distances));
+#else
   const std::vector<Mesh::Property_map<Mesh::Vertex_index, double>> fields;
   solver.compute_distances_from_each_source<CGAL::Parallel_tag>(sources, fields);
+#endif
 }
