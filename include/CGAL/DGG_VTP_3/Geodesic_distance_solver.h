@@ -182,9 +182,6 @@ public:
       throw std::invalid_argument("one distance map per source is needed");
 
     std::vector<Propagation_statistics> statistics(indices.size());
-#ifndef CGAL_LINKED_WITH_TBB
-    static_assert(!internal::is_parallel<ConcurrencyTag>(), "Parallel_tag is enabled but TBB is unavailable.");
-#endif
     internal::for_each_index<Effective_tag<ConcurrencyTag>>(indices.size(), [&](std::size_t k) {
       statistics[k] = propagate<Sequential_tag>(std::vector<Index>(1, indices[k]), accuracy,
                                                 *(std::begin(distance_maps) + k));
@@ -220,19 +217,13 @@ private:
     return indices;
   }
 
-  // Exact number types share their representations between copies without locking them, and
-  // the mesh's lengths are copied into every window: with those, one thread does all the work.
   template <class ConcurrencyTag>
-  using Effective_tag = typename std::conditional<std::is_floating_point<Computation_FT>::value,
-                                                  ConcurrencyTag, Sequential_tag>::type;
+  using Effective_tag = typename internal::Effective_concurrency_tag<ConcurrencyTag, Computation_FT>::type;
 
   template <class ConcurrencyTag, class VertexDistanceMap>
   Propagation_statistics propagate(const std::vector<Index>& sources, Computation_FT accuracy,
                                    VertexDistanceMap distances) const
   {
-#ifndef CGAL_LINKED_WITH_TBB
-    static_assert(!internal::is_parallel<ConcurrencyTag>(), "Parallel_tag is enabled but TBB is unavailable.");
-#endif
     internal::Window_propagation<Computation_FT> propagation(m_mesh, accuracy);
     propagation.template run<Effective_tag<ConcurrencyTag>>(sources);
     const std::vector<Computation_FT>& d = propagation.distances();

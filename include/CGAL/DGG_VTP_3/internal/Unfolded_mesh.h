@@ -77,10 +77,10 @@ public:
   // geodesics may bend there: saddle (angle sum above 2*pi), border or non-manifold vertex
   bool is_exact_pseudo_source(Index v) const { return m_exact_pseudo_source[v] != 0; }
 
-  // fills the mesh from a user's triangle mesh (a free function: the graph's next(), source()...
-  // would be hidden inside the class by the members of the same names)
   template <class FT_>
   friend void reorder_faces(const std::vector<std::uint32_t>& order, Unfolded_mesh<FT_>& out);
+  // fills the mesh from a user's triangle mesh (a free function: the graph's next(), source()...
+  // would be hidden inside the class by the members of the same names)
   template <class FT_, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
             class GeomTraits>
   friend void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,

@@ -93,7 +93,9 @@ public:
   }
 
 private:
-  static constexpr int block_bits = 10; // 1024 slots per block
+  // 1024 slots per block: a propagation has a pool per patch (up to 256), each holding a partly
+  // used block while the wavefront crosses it
+  static constexpr int block_bits = 10;
   static constexpr Index block_mask = (Index(1) << block_bits) - 1;
   Window<FT>& window(Index i) { return m_window_blocks[i >> block_bits][i & block_mask]; }
   Index& next(Index i) { return m_next_blocks[i >> block_bits][i & block_mask]; }

@@ -106,14 +106,13 @@ public:
   template <class ConcurrencyTag>
   void run(const std::vector<Index>& sources)
   {
-    std::vector<char> is_source(m_distance.size(), 0);
+    m_is_source.assign(m_distance.size(), 0);
     for(Index s : sources)
     {
-      is_source[s] = 1;
+      m_is_source[s] = 1;
       m_distance[s] = m_committed[s] = FT(0);
       m_patches[m_owner[s]].queue.push(Queue_entry(FT(0), s));
     }
-    m_is_source = &is_source;
     std::vector<Index> active;
     for(;;)
     {
@@ -148,7 +147,6 @@ public:
       m_stats.windows_peak = (std::max)(m_stats.windows_peak, peak);
       deliver_outboxes<ConcurrencyTag>(active);
     }
-    m_is_source = nullptr;
     for(Patch& p : m_patches)
     {
       m_stats.windows_created += p.lists.created();
@@ -251,7 +249,7 @@ private:
       if(top.first > m_distance[v])
         continue; // superseded by a later, shorter distance
       ++p.stats.vertices_popped;
-      if((*m_is_source)[v] || m_mesh.is_singular(v))
+      if(m_is_source[v] || m_mesh.is_singular(v))
         emit_pseudo_source_windows(p, v, m_mesh.corners_begin(v), m_mesh.corners_end(v));
       else if(is_dgg())
         emit_pseudo_source_windows_in_fan(p, v);
@@ -268,7 +266,6 @@ private:
   template <class ConcurrencyTag>
   void deliver_outboxes(const std::vector<Index>& active)
   {
-    std::vector<std::vector<Index>>& senders = m_senders;
     std::vector<Index> receivers;
     const auto receive = [&](Index q) {
       if(!m_receiving[q])
@@ -284,13 +281,13 @@ private:
       for(Index q : p.recipients)
       {
         receive(q);
-        senders[q].push_back(p.id);
+        m_senders[q].push_back(p.id);
       }
       p.recipients.clear();
     }
     for_each_index<ConcurrencyTag>(receivers.size(), [&](std::size_t k) {
       Patch& q = m_patches[receivers[k]];
-      for(Index sender : senders[q.id])
+      for(Index sender : m_senders[q.id])
       {
         Outbox& box = m_patches[sender].outbox[q.id];
         for(const Window_message& m : box.windows)
@@ -301,7 +298,7 @@ private:
           enter_face(q, f);
         box = Outbox(); // its memory back: some pair of patches talks in a few rounds only
       }
-      senders[q.id].clear();
+      m_senders[q.id].clear();
       m_receiving[q.id] = 0;
       for(Index v : q.changed)
         m_committed[v] = m_distance[v];
@@ -919,7 +916,7 @@ private:
   std::deque<Patch> m_patches;        // a deque: a patch never moves
   Index m_faces_per_patch = 0;
   FT m_band;                          // a round pops the vertices up to this beyond the nearest
-  const std::vector<char>* m_is_source = nullptr;
+  std::vector<char> m_is_source;      // per vertex: one of the sources (they emit all around)
   std::vector<std::vector<Index>> m_senders; // per patch: the patches whose outbox to it is not empty
   std::vector<char> m_receiving;      // per patch: in this round's delivery
   Propagation_statistics m_stats;

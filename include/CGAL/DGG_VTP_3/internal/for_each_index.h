@@ -23,6 +23,19 @@ namespace internal {
 template <class ConcurrencyTag>
 constexpr bool is_parallel() { return std::is_convertible<ConcurrencyTag, Parallel_tag>::value; }
 
+// The tag a computation in `FT` runs with: `ConcurrencyTag` (Parallel_tag is refused without
+// TBB), but Sequential_tag for number types other than float and double: exact number types
+// share their representations between copies without locking them, and the mesh's lengths are
+// copied into every window.
+template <class ConcurrencyTag, class FT>
+struct Effective_concurrency_tag
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!is_parallel<ConcurrencyTag>(), "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+  using type = typename std::conditional<std::is_floating_point<FT>::value, ConcurrencyTag, Sequential_tag>::type;
+};
+
 // f(0), ..., f(n - 1): in this order with Sequential_tag, shared among TBB's threads in any order
 // with Parallel_tag (each call must then touch only its own data). One index per task: callers
 // give indices that are worth a task each.
