@@ -37,7 +37,7 @@ int main(int argc, char** argv)
 
   const vertex_descriptor source = *(vertices(mesh).begin());
   const CGAL::DGG_VTP_3::Propagation_statistics stats =
-    CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, source, distance);
+    CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, distance, source);
 
   std::cout << num_vertices(mesh) << " vertices, " << stats.windows_created << " windows" << std::endl;
 

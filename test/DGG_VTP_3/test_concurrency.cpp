@@ -139,6 +139,24 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(each_source_equals_single_queries, Config, All_con
   }
 }
 
+// without a tag, compute_distances_from_each_source runs sequentially, as CGAL's tagged functions do
+BOOST_AUTO_TEST_CASE(each_source_defaults_to_sequential)
+{
+  using Mesh = Sm_d::Mesh;
+  const Mesh mesh = make_mesh<Mesh>(read_soup("pinion.ply"));
+  const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
+  const std::vector<Vertex<Mesh>> sources = spread_sources(mesh, 3);
+  const Single_queries<Mesh> single = single_queries(mesh, solver, sources, 0.);
+  const std::vector<Field_map<Mesh>> maps = fresh_maps(mesh, sources.size());
+  BOOST_REQUIRE_EQUAL(solver.compute_distances_from_each_source(sources, maps).size(), sources.size());
+  std::size_t differences = 0;
+  for(std::size_t k = 0; k < sources.size(); ++k)
+    for(auto v : vertices(mesh))
+      if(!same_bits(get(maps[k], v), get(single.fields[k], v)))
+        ++differences;
+  BOOST_TEST(differences == 0u);
+}
+
 // One propagation: Parallel_tag gives the distances and statistics of Sequential_tag, bit for bit,
 // for any number of threads. The meshes have 8 (lion_head) and 36 (bunny) patches of faces, so
 // that windows, distances and faces entering the region cross from patch to patch; the results

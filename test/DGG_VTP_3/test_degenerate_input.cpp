@@ -52,7 +52,7 @@ void require_constructor_throws(const Mesh& mesh)
   using Solver = CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh>;
   BOOST_CHECK_THROW(Solver{mesh}, std::invalid_argument);
   auto map = get(CGAL::dynamic_vertex_property_t<typename Solver::FT>(), mesh);
-  BOOST_CHECK_THROW(CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, *vertices(mesh).begin(), map),
+  BOOST_CHECK_THROW(CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, map, *vertices(mesh).begin()),
                     std::invalid_argument);
 }
 
@@ -133,9 +133,9 @@ BOOST_AUTO_TEST_CASE(invalid_source_surface_mesh)
   BOOST_CHECK_THROW(solver.compute_distances(Mesh::null_vertex(), map), std::invalid_argument);
   BOOST_CHECK_THROW(solver.compute_distances(Mesh::Vertex_index(4), map), std::invalid_argument);
   BOOST_CHECK_THROW(solver.compute_distances(Mesh::Vertex_index(1000), map), std::invalid_argument);
-  BOOST_CHECK_THROW(CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, Mesh::null_vertex(), map),
+  BOOST_CHECK_THROW(CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, map, Mesh::null_vertex()),
                     std::invalid_argument);
-  BOOST_CHECK_THROW(CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, Mesh::Vertex_index(4), map),
+  BOOST_CHECK_THROW(CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, map, Mesh::Vertex_index(4)),
                     std::invalid_argument);
   // still usable after the exceptions
   BOOST_CHECK_NO_THROW(solver.compute_distances(Mesh::Vertex_index(0), map));
@@ -165,11 +165,24 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(invalid_accuracy, Config, All_configurations)
   for(double accuracy : {-1e-3, -inf, nan, inf})
   {
     BOOST_CHECK_THROW(solver.compute_distances(v, map, CGAL::parameters::accuracy(accuracy)), std::invalid_argument);
-    BOOST_CHECK_THROW(CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, v, map, CGAL::parameters::accuracy(accuracy)),
+    BOOST_CHECK_THROW(CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, map, v, CGAL::parameters::accuracy(accuracy)),
                       std::invalid_argument);
   }
   // 0 is the exact algorithm, the default
   BOOST_CHECK_NO_THROW(solver.compute_distances(v, map, CGAL::parameters::accuracy(0.)));
+}
+
+// faces and vertices are numbered in 32 bits (3 per face for the halfedges): a mesh beyond that
+// is refused with a message, not numbered modulo 2^32 (such a mesh needs ~100 GB, so the check is
+// called with the sizes alone)
+BOOST_AUTO_TEST_CASE(too_many_faces_for_32_bit_indices)
+{
+  using CGAL::DGG_VTP_3::internal::check_index_range;
+  const std::size_t most = (std::size_t(1) << 32) / 3 - 1; // (2^32 - 1) / 3 - 1
+  BOOST_CHECK_NO_THROW(check_index_range<double>(most, most));
+  BOOST_CHECK_THROW(check_index_range<double>(3, most + 1), std::invalid_argument);
+  BOOST_CHECK_THROW(check_index_range<double>(most + 1, 3), std::invalid_argument);
+  BOOST_CHECK_THROW(check_index_range<double>(3, std::size_t(1) << 33), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(quad_face, Config, All_configurations)

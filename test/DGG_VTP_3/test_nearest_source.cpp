@@ -32,6 +32,28 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(flat_patch_two_sources, Config, All_configurations
   check_distances(d, truth, a, Config::tolerance, "two sources, " + config_name<Config>());
 }
 
+// the free function with a range of sources is compute_distances_to_nearest_source, bit for bit
+BOOST_AUTO_TEST_CASE_TEMPLATE(free_function_with_sources, Config, All_configurations)
+{
+  using Mesh = typename Config::Mesh;
+  const Mesh mesh = make_mesh<Mesh>(read_soup("pinion.ply"));
+  const auto vertices = vertex_list(mesh);
+  const std::vector<Vertex<Mesh>> sources{vertices[7], vertices[300], vertices[611]};
+  for(double accuracy : {0., 1e-5})
+  {
+    auto from_function = get(CGAL::dynamic_vertex_property_t<typename Distance_map<Mesh>::FT>(), mesh);
+    auto from_class = get(CGAL::dynamic_vertex_property_t<typename Distance_map<Mesh>::FT>(), mesh);
+    const auto np = CGAL::parameters::accuracy(accuracy);
+    const auto a = CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, from_function, sources, np);
+    const auto b = CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh>(mesh).compute_distances_to_nearest_source(
+      sources, from_class, np);
+    BOOST_TEST(to_vector(mesh, from_function) == to_vector(mesh, from_class), boost::test_tools::per_element());
+    BOOST_TEST(a.windows_created == b.windows_created);
+    for(const auto& s : sources)
+      BOOST_TEST(double(get(from_function, s)) == 0.);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(no_source_is_an_error)
 {
   using Mesh = CGAL::Surface_mesh<Epick::Point_3>;

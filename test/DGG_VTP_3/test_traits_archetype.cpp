@@ -89,7 +89,7 @@ BOOST_AUTO_TEST_CASE(archetype_surface_mesh_of_archetype_points)
 
   auto map = mesh.add_property_map<Mesh::Vertex_index, double>("v:distance", 0.).first;
   const auto np = CGAL::parameters::geom_traits(archetype::Traits()).vertex_point_map(get(CGAL::vertex_point, mesh));
-  CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, Mesh::Vertex_index(10), map, np);
+  CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, map, Mesh::Vertex_index(10), np);
   BOOST_TEST(to_vector(mesh, map) == expected, boost::test_tools::per_element());
 
   const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh, archetype::Traits> solver(mesh, np);
@@ -111,7 +111,7 @@ BOOST_AUTO_TEST_CASE(archetype_through_vertex_point_map)
   const std::vector<double> expected = geodesic_distances(mesh, 7);
   auto map = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
   CGAL::DGG_VTP_3::compute_geodesic_distances(
-    mesh, vertex_list(mesh)[7], map,
+    mesh, map, vertex_list(mesh)[7],
     CGAL::parameters::vertex_point_map(archetype::Point_map<Mesh>{&mesh}).geom_traits(archetype::Traits()));
   BOOST_TEST(to_vector(mesh, map) == expected, boost::test_tools::per_element());
 }

@@ -177,7 +177,7 @@ std::vector<double> geodesic_distances(const Mesh& mesh, std::size_t source_inde
                                        const NamedParameters& np = CGAL::parameters::default_values())
 {
   auto map = get(CGAL::dynamic_vertex_property_t<typename Distance_map<Mesh>::FT>(), mesh);
-  const auto s = CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, vertex_list(mesh).at(source_index), map, np);
+  const auto s = CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, map, vertex_list(mesh).at(source_index), np);
   if(statistics)
     *statistics = s;
   return to_vector(mesh, map);

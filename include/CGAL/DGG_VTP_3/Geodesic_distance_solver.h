@@ -7,18 +7,21 @@
 #define CGAL_DGG_VTP_3_GEODESIC_DISTANCE_SOLVER_H
 
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
+#include <CGAL/DGG_VTP_3/internal/Effective_concurrency_tag.h>
+#include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
-#include <CGAL/DGG_VTP_3/internal/for_each_index.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/for_each.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/property_map.h>
 #include <CGAL/tags.h>
 
 #include <boost/graph/graph_traits.hpp>
+#include <boost/range/irange.hpp>
 
 #include <cmath>
 #include <iterator>
@@ -72,14 +75,42 @@ public:
    * prepares the mesh for distance queries.
    *
    * \param tm a triangle mesh; it is not modified
-   * \param np an optional sequence of named parameters among `vertex_point_map`, `geom_traits`,
-   *           `vertex_index_map` and `face_index_map`, with their usual CGAL meaning
+   * \param np an optional sequence of named parameters among the ones listed below
+   *
+   * \cgalNamedParamsBegin
+   *   \cgalParamNBegin{vertex_point_map}
+   *     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+   *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and the
+   *                    traits' `Point_3` as value type}
+   *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{geom_traits}
+   *     \cgalParamDescription{an instance of a geometric traits class}
+   *     \cgalParamType{a model of `DGGVTPTraits_3`}
+   *     \cgalParamDefault{the kernel of the point type of the vertex point map}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{vertex_index_map}
+   *     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index
+   *                           between `0` and `num_vertices(tm) - 1`}
+   *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and
+   *                    `std::size_t` as value type}
+   *     \cgalParamDefault{an automatically indexed internal map}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{face_index_map}
+   *     \cgalParamDescription{a property map associating to each face of `tm` a unique index
+   *                           between `0` and `num_faces(tm) - 1`}
+   *     \cgalParamType{a model of `ReadablePropertyMap` with `face_descriptor` as key and
+   *                    `std::size_t` as value type}
+   *     \cgalParamDefault{an automatically indexed internal map}
+   *   \cgalParamNEnd
+   * \cgalNamedParamsEnd
    *
    * \throws std::invalid_argument if a face is not a triangle, a coordinate is not finite, or a
    *         face is degenerate (zero length edge or zero area), a face is a sliver (an edge more
    *         than 1e10 times longer than the height on it) or a vertex is the tip of a cone
    *         sharper than 1e-4 radians (a closed fan whose angles add up to less): windows would
-   *         wrap around those too many times (see the input policy in the user manual).
+   *         wrap around those too many times (see the input policy in the user manual), or
+   *         if the mesh has more faces or vertices than 32-bit indices can number (about 1.4e9).
    */
   template <class NamedParameters = parameters::Default_named_parameters>
   explicit Geodesic_distance_solver(const TriangleMesh& tm,
@@ -93,6 +124,7 @@ public:
       m_vim, get_initialized_face_index_map(tm, np),
       parameters::choose_parameter<Traits>(parameters::get_parameter(np, internal_np::geom_traits)),
       m_mesh);
+    m_partition = internal::Patch_partition<Computation_FT>(m_mesh);
     m_vertices.resize(m_mesh.number_of_vertices());
     for(vertex_descriptor v : vertices(tm))
       m_vertices[static_cast<std::size_t>(get(m_vim, v))] = v;
@@ -111,9 +143,16 @@ public:
    *         `double` (exact number types are not thread-safe), one thread does the work.
    * \param source_vertex a vertex of the mesh given to the constructor
    * \param distances a writable vertex property map with value type `FT`
-   * \param np an optional sequence of named parameters:
-   *   - `accuracy`: the DGG-VTP accuracy parameter epsilon >= 0; 0 (the default) is the exact
-   *     algorithm.
+   * \param np an optional sequence of named parameters among the ones listed below
+   *
+   * \cgalNamedParamsBegin
+   *   \cgalParamNBegin{accuracy}
+   *     \cgalParamDescription{the accuracy epsilon of DGG-VTP: every distance is within a relative
+   *                           error epsilon of the exact one; 0 is the exact algorithm (VTP)}
+   *     \cgalParamType{`double`, finite and >= 0}
+   *     \cgalParamDefault{`0`}
+   *   \cgalParamNEnd
+   * \cgalNamedParamsEnd
    *
    * \returns what the propagation did
    * \throws std::invalid_argument if `source_vertex` is not a vertex of the mesh or the accuracy
@@ -134,6 +173,7 @@ public:
    *
    * \tparam ConcurrencyTag as for `compute_distances()`
    * \tparam VertexRange a range of `vertex_descriptor`
+   * \param np the named parameters of `compute_distances()`
    * \throws std::invalid_argument if `sources` is empty or has an element that is not a vertex of
    *         the mesh, or if the accuracy is negative or not finite.
    */
@@ -156,7 +196,7 @@ public:
    * `compute_distances()`, so the distances are the same bit for bit whatever the concurrency tag
    * and the number of threads.
    *
-   * \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` (the sources are shared
+   * \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` (the sources are shared
    *         among TBB's threads, each propagation runs on one thread; needs
    *         `CGAL_LINKED_WITH_TBB`; one thread with an `FT` other than `float` and `double`) or
    *         `CGAL::Parallel_if_available_tag`
@@ -164,12 +204,13 @@ public:
    * \tparam VertexDistanceMapRange a random access range of writable vertex property maps with value
    *         type `FT`, as many as sources; with `Parallel_tag` they are written at the same time,
    *         so two of them must not share their storage
+   * \param np the named parameters of `compute_distances()`
    * \returns what each propagation did, in the order of `sources`
    * \throws std::invalid_argument before any propagation if an element of `sources` is not a
    *         vertex of the mesh, if the two ranges differ in size, or if the accuracy is negative or
    *         not finite. No source: nothing is done.
    */
-  template <class ConcurrencyTag, class VertexRange, class VertexDistanceMapRange,
+  template <class ConcurrencyTag = Sequential_tag, class VertexRange, class VertexDistanceMapRange,
             class NamedParameters = parameters::Default_named_parameters>
   std::vector<Propagation_statistics>
   compute_distances_from_each_source(const VertexRange& sources,
@@ -182,9 +223,10 @@ public:
       throw std::invalid_argument("one distance map per source is needed");
 
     std::vector<Propagation_statistics> statistics(indices.size());
-    internal::for_each_index<Effective_tag<ConcurrencyTag>>(indices.size(), [&](std::size_t k) {
+    CGAL::for_each<Effective_tag<ConcurrencyTag>>(boost::irange(std::size_t(0), indices.size()), [&](std::size_t k) {
       statistics[k] = propagate<Sequential_tag>(std::vector<Index>(1, indices[k]), accuracy,
                                                 *(std::begin(distance_maps) + k));
+      return true;
     });
     return statistics;
   }
@@ -224,7 +266,7 @@ private:
   Propagation_statistics propagate(const std::vector<Index>& sources, Computation_FT accuracy,
                                    VertexDistanceMap distances) const
   {
-    internal::Window_propagation<Computation_FT> propagation(m_mesh, accuracy);
+    internal::Window_propagation<Computation_FT> propagation(m_mesh, m_partition, accuracy);
     propagation.template run<Effective_tag<ConcurrencyTag>>(sources);
     const std::vector<Computation_FT>& d = propagation.distances();
     for(std::size_t i = 0; i < m_vertices.size(); ++i)
@@ -234,6 +276,7 @@ private:
 
   Vertex_index_map m_vim;                    // user's vertex -> internal index
   Mesh m_mesh;                               // intrinsic geometry and combinatorics
+  internal::Patch_partition<Computation_FT> m_partition; // the faces cut into patches for the propagation's rounds
   std::vector<vertex_descriptor> m_vertices; // internal index -> user's vertex
 };
 

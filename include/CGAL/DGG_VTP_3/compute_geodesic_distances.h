@@ -8,36 +8,85 @@
 
 #include <CGAL/DGG_VTP_3/Geodesic_distance_solver.h>
 
+#include <type_traits>
+#include <vector>
+
 namespace CGAL {
 namespace DGG_VTP_3 {
 
 /*!
  * \ingroup PkgDGGVTP3Ref
  *
- * One-shot form of `Geodesic_distance_solver`: prepares the mesh and answers one query, with the
- * same named parameters and the same defaults (it is written in terms of the class).
+ * computes the geodesic distance from a source vertex, or from the nearest of several, to every
+ * vertex of `tm`: the one-shot form of `Geodesic_distance_solver`, with the same named parameters
+ * and the same defaults (it is written in terms of the class). The arguments come in the order of
+ * `CGAL::Heat_method_3::estimate_geodesic_distances()`.
  *
  * \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
  *         `CGAL::Parallel_if_available_tag`, as for `Geodesic_distance_solver::compute_distances()`
- * \param tm a triangle mesh, model of `FaceListGraph` and `HalfedgeListGraph`
- * \param source_vertex the source vertex
- * \param distances a writable vertex property map with the traits' `FT` as value type;
- *        unreachable vertices get `+infinity`
- * \param np optional named parameters: `vertex_point_map`, `geom_traits`, `vertex_index_map`,
- *        `face_index_map`, `accuracy`
+ * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` with triangle faces
+ * \tparam VertexDistanceMap a writable vertex property map with the traits' `FT` as value type
+ * \tparam Sources a `vertex_descriptor`, or a range of them
+ *
+ * \param tm the triangle mesh
+ * \param distances receives the distances; unreachable vertices get `+infinity`
+ * \param sources the source vertex, or the source vertices
+ * \param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{accuracy}
+ *     \cgalParamDescription{the accuracy epsilon of DGG-VTP: every distance is within a relative
+ *                           error epsilon of the exact one; 0 is the exact algorithm (VTP)}
+ *     \cgalParamType{`double`, finite and >= 0}
+ *     \cgalParamDefault{`0`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and the
+ *                    traits' `Point_3` as value type}
+ *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a model of `DGGVTPTraits_3`}
+ *     \cgalParamDefault{the kernel of the point type of the vertex point map}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_index_map}
+ *     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index
+ *                           between `0` and `num_vertices(tm) - 1`}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and
+ *                    `std::size_t` as value type}
+ *     \cgalParamDefault{an automatically indexed internal map}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{face_index_map}
+ *     \cgalParamDescription{a property map associating to each face of `tm` a unique index
+ *                           between `0` and `num_faces(tm) - 1`}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `face_descriptor` as key and
+ *                    `std::size_t` as value type}
+ *     \cgalParamDefault{an automatically indexed internal map}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \returns what the propagation did
+ * \throws std::invalid_argument for the input the constructor of `Geodesic_distance_solver` or
+ *         its queries refuse
  */
-template <class ConcurrencyTag = Sequential_tag, class TriangleMesh, class VertexDistanceMap,
+template <class ConcurrencyTag = Sequential_tag, class TriangleMesh, class VertexDistanceMap, class Sources,
           class NamedParameters = parameters::Default_named_parameters>
 Propagation_statistics
 compute_geodesic_distances(const TriangleMesh& tm,
-                           typename boost::graph_traits<TriangleMesh>::vertex_descriptor source_vertex,
                            VertexDistanceMap distances,
+                           const Sources& sources,
                            const NamedParameters& np = parameters::default_values())
 {
   using Traits = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
   using Vertex_index_map = typename GetInitializedVertexIndexMap<TriangleMesh, NamedParameters>::const_type;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   const Geodesic_distance_solver<TriangleMesh, Traits, Vertex_index_map> solver(tm, np);
-  return solver.template compute_distances<ConcurrencyTag>(source_vertex, distances, np);
+  if constexpr(std::is_convertible<Sources, vertex_descriptor>::value)
+    return solver.template compute_distances<ConcurrencyTag>(sources, distances, np);
+  else
+    return solver.template compute_distances_to_nearest_source<ConcurrencyTag>(sources, distances, np);
 }
 
 } // namespace DGG_VTP_3

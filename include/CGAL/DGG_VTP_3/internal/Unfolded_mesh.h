@@ -6,6 +6,7 @@
 #ifndef CGAL_DGG_VTP_3_INTERNAL_UNFOLDED_MESH_H
 #define CGAL_DGG_VTP_3_INTERNAL_UNFOLDED_MESH_H
 
+#include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -100,11 +101,17 @@ private:
   std::vector<char> m_exact_pseudo_source;  // V: pseudo-source of the exact (VTP) propagation
 };
 
-// The limits on input geometry beyond which windows wrap around thin parts of the surface so
-// often that a propagation would not finish (doc/: input policy). The window counts grow like
-// pi / (cone angle) and, on a tube of slivers, like the slivers' length / height.
-template <class FT> FT max_sliver_ratio() { return FT(1e10); }
-template <class FT> FT min_cone_angle() { return FT(1e-4); }
+// Halfedges are numbered 3 f + k in 32 bits, the largest number meaning "none": throws
+// std::invalid_argument for a mesh whose faces or vertices do not fit.
+template <class FT>
+void check_index_range(std::size_t number_of_vertices, std::size_t number_of_faces)
+{
+  const std::size_t most = std::size_t(Unfolded_mesh<FT>::no_halfedge) / 3 - 1;
+  if(number_of_faces > most || number_of_vertices > most)
+    throw std::invalid_argument("the mesh is too large: " + std::to_string(number_of_faces) + " faces and " +
+                                std::to_string(number_of_vertices) + " vertices, at most " + std::to_string(most) +
+                                " of each are supported (32-bit indices)");
+}
 
 inline std::string to_short_string(double x)
 {
@@ -201,6 +208,7 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
   const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
   if(!CGAL::is_triangle_mesh(tm))
     throw std::invalid_argument("the mesh has faces that are not triangles");
+  check_index_range<FT>(nv, nf);
 
   // coordinates, checked once
   std::vector<FT> xyz(3 * nv);
@@ -299,11 +307,11 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
     if(!(twice_area > FT(0)) || !CGAL::is_finite(twice_area) || !CGAL::is_finite(twice_area / longest))
       throw degenerate();
     // longest / height on it = longest^2 / (2 area)
-    if(longest > max_sliver_ratio<FT>() * (twice_area / longest))
+    if(longest > Tuning<FT>::max_sliver_ratio() * (twice_area / longest))
       throw std::invalid_argument("face " + std::to_string(user_face) + " is a sliver: an edge " +
                                   to_short_string(CGAL::to_double(longest * longest / twice_area)) +
                                   " times longer than the height on it (at most " +
-                                  to_short_string(CGAL::to_double(max_sliver_ratio<FT>())) + " is accepted)");
+                                  to_short_string(CGAL::to_double(Tuning<FT>::max_sliver_ratio())) + " is accepted)");
   }
   xyz = std::vector<FT>(); // its memory is the peak's
 
@@ -374,10 +382,10 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
   // there), each fan that closes is walked: a sharp cone may be joined to other faces.
   {
     const auto check_cone = [](std::size_t v, FT angle) {
-      if(angle < min_cone_angle<FT>())
+      if(angle < Tuning<FT>::min_cone_angle())
         throw std::invalid_argument("vertex " + std::to_string(v) + " is the tip of a cone of angle " +
                                     to_short_string(CGAL::to_double(angle)) + " radians (at least " +
-                                    to_short_string(CGAL::to_double(min_cone_angle<FT>())) + " is accepted)");
+                                    to_short_string(CGAL::to_double(Tuning<FT>::min_cone_angle())) + " is accepted)");
     };
     std::vector<char> walked(3 * nf, 0);
     for(std::size_t v = 0; v < nv; ++v)
@@ -408,8 +416,8 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
   // are real paths, pruned like any other); one computed slightly below relies on the windows of
   // either side meeting exactly along the straight line through it, which rounding blurs. So
   // the test leans towards saddles.
-  const FT two_pi = FT(2 * 3.14159265358979323846);
-  const FT flat_tolerance = FT(1e-6);
+  const FT two_pi = FT(2 * CGAL_PI);
+  const FT flat_tolerance = Tuning<FT>::flat_tolerance();
   out.m_exact_pseudo_source.assign(nv, 0);
   for(std::size_t v = 0; v < nv; ++v)
     out.m_exact_pseudo_source[v] = out.m_singular[v] || out.m_angle_sum[v] > two_pi * (FT(1) - flat_tolerance);

@@ -33,6 +33,8 @@ public:
   {}
 
   bool empty(Index h) const { return m_head[h] == nil; }
+  // the number of lists
+  std::size_t size() const { return m_head.size(); }
 
   void push(Index h, const Window<FT>& w)
   {

@@ -1,0 +1,199 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_ROUND_SCHEDULER_H
+#define CGAL_DGG_VTP_3_INTERNAL_ROUND_SCHEDULER_H
+
+#include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
+#include <CGAL/DGG_VTP_3/internal/Window.h>
+
+#include <CGAL/for_each.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// Runs a propagation split into the patches of a Patch_partition, in rounds, so that the
+// patches of a round may run on any threads in any order with the same results bit for bit.
+//
+// In a round, every patch with work pops its vertices nearer than the round's limit (the nearest
+// vertex of all, plus the partition's band) and propagates its window lists, as the sequential
+// algorithm does; what it does to the rest of the mesh (a window into another patch's list, a
+// distance of another patch's vertex, a face entering the region R there) is handed off to the
+// scheduler and waits in an outbox until the round ends, and the distances of other patches'
+// vertices it reads are those of the round's start. So each patch's round depends on the
+// round's start only. Outboxes are delivered, receiver by receiver, in the order of the senders.
+//
+// `Propagation` runs Algorithm 1 on one patch at a time; what the scheduler asks of it:
+//   FT nearest_queued(p)            drops superseded queue entries, the nearest left (+inf: none)
+//   bool has_work(p)                vertices queued or window lists scheduled
+//   void run_round(p, limit)
+//   std::size_t take_peak(p)        windows alive at once in p since the last call
+//   void receive(p, message)        for each kind of message below
+//   bool schedule_stranded_lists(active)
+//   const std::vector<FT>& distances()
+template <class FT>
+class Round_scheduler
+{
+public:
+  using Index = std::uint32_t;
+
+  // the three things a patch may do to another one
+  struct Window_message
+  {
+    Index halfedge;
+    Window<FT> window;
+  };
+  struct Relax_message
+  {
+    Index vertex;
+    FT distance;
+    FT back;
+  };
+  struct Face_message
+  {
+    Index face;
+  };
+
+  Round_scheduler(const Patch_partition<FT>& partition, std::size_t number_of_vertices)
+    : m_partition(partition)
+    , m_committed(number_of_vertices, std::numeric_limits<FT>::infinity())
+    , m_outbox(partition.size(), std::vector<Outbox>(partition.size()))
+    , m_recipients(partition.size())
+    , m_senders(partition.size())
+    , m_receiving(partition.size(), 0)
+  {}
+
+  // ---- what a patch sees of the others during a round ----------------------------------------
+
+  // The hand-off point: a `Message` made of `args` from patch `from` concerns patch `to`. If that
+  // is another patch, the message waits in the outbox until the round ends (returns true); if
+  // not, the caller applies it itself (returns false, and no message is made).
+  template <class Message, class... Args>
+  bool hand_off(Index from, Index to, const Args&... args)
+  {
+    if(to == from)
+      return false;
+    Outbox& box = m_outbox[from][to];
+    if(box.empty())
+      m_recipients[from].push_back(to);
+    box.push(Message{args...});
+    return true;
+  }
+
+  // the distance of vertex `v` as patch `p` may read it during a round
+  FT distance_seen(Index p, Index v, const std::vector<FT>& distance) const
+  {
+    return m_partition.owner(v) == p ? distance[v] : m_committed[v];
+  }
+
+  // a distance set outside the rounds (the sources')
+  void commit(Index v, FT d) { m_committed[v] = d; }
+
+  // ---- the rounds ----------------------------------------------------------------------------
+
+  template <class ConcurrencyTag, class Propagation>
+  void run(Propagation& propagation, std::size_t& windows_peak)
+  {
+    std::vector<Index> active;
+    for(;;)
+    {
+      FT nearest = std::numeric_limits<FT>::infinity();
+      active.clear();
+      for(Index p = 0; p < m_partition.size(); ++p)
+      {
+        nearest = (std::min)(nearest, propagation.nearest_queued(p));
+        if(propagation.has_work(p))
+          active.push_back(p);
+      }
+      if(active.empty() && !propagation.schedule_stranded_lists(active))
+        break;
+      const FT limit = nearest + m_partition.band();
+      CGAL::for_each<ConcurrencyTag>(active, [&](Index p) { propagation.run_round(p, limit); return true; });
+      // an upper bound of the windows alive at once during the round
+      std::size_t peak = 0;
+      for(Index p = 0; p < m_partition.size(); ++p)
+        peak += propagation.take_peak(p);
+      windows_peak = (std::max)(windows_peak, peak);
+      deliver<ConcurrencyTag>(propagation, active);
+    }
+  }
+
+private:
+  struct Outbox
+  {
+    std::vector<Window_message> windows;
+    std::vector<Relax_message> relaxations;
+    std::vector<Face_message> faces; // entering R
+    bool empty() const { return windows.empty() && relaxations.empty() && faces.empty(); }
+    void push(const Window_message& m) { windows.push_back(m); }
+    void push(const Relax_message& m) { relaxations.push_back(m); }
+    void push(const Face_message& m) { faces.push_back(m); }
+  };
+
+  // The outboxes of the round, each patch receiving from the others in the order of their ids,
+  // then the distances of the border vertices that other patches read
+  template <class ConcurrencyTag, class Propagation>
+  void deliver(Propagation& propagation, const std::vector<Index>& active)
+  {
+    std::vector<Index> receivers;
+    const auto receive = [&](Index q) {
+      if(!m_receiving[q])
+      {
+        m_receiving[q] = 1;
+        receivers.push_back(q);
+      }
+    };
+    for(Index p : active)
+      receive(p);
+    for(Index p = 0; p < m_partition.size(); ++p)
+    {
+      for(Index q : m_recipients[p])
+      {
+        receive(q);
+        m_senders[q].push_back(p);
+      }
+      m_recipients[p].clear();
+    }
+    const std::vector<FT>& distance = propagation.distances();
+    CGAL::for_each<ConcurrencyTag>(receivers, [&](Index q) {
+      for(Index sender : m_senders[q])
+      {
+        Outbox& box = m_outbox[sender][q];
+        for(const Window_message& m : box.windows)
+          propagation.receive(q, m);
+        for(const Relax_message& m : box.relaxations)
+          propagation.receive(q, m);
+        for(const Face_message& m : box.faces)
+          propagation.receive(q, m);
+        box = Outbox(); // its memory back: some pair of patches talks in a few rounds only
+      }
+      m_senders[q].clear();
+      m_receiving[q] = 0;
+      // only the patches that ran or received in this round changed their vertices' distances
+      for(const Index* v = m_partition.border_begin(q); v != m_partition.border_end(q); ++v)
+        m_committed[*v] = distance[*v];
+      return true;
+    });
+  }
+
+  const Patch_partition<FT>& m_partition;
+  std::vector<FT> m_committed;                 // per border vertex: its distance at the round's start
+  std::vector<std::vector<Outbox>> m_outbox;   // per sender, per receiver
+  std::vector<std::vector<Index>> m_recipients; // per sender: the patches whose outbox is not empty
+  std::vector<std::vector<Index>> m_senders;   // per receiver: the patches whose outbox to it is not empty
+  std::vector<char> m_receiving;               // per patch: in this round's delivery
+};
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_ROUND_SCHEDULER_H

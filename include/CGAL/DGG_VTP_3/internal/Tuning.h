@@ -1,0 +1,79 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_TUNING_H
+#define CGAL_DGG_VTP_3_INTERNAL_TUNING_H
+
+#include <CGAL/number_type_config.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// Every constant the propagation was tuned or calibrated with, in one place, with what it was
+// measured on. The figures behind them are in benchmark/DGG_VTP_3/README.md.
+template <class FT>
+struct Tuning
+{
+  // ---- accuracy control (DGG-VTP) -----------------------------------------------------------
+
+  // The epsilon given to the distance bound of Theorem 2 and to the "one angle, two sides"
+  // tolerance: 0.25 times the user's. It is the loosest factor that keeps every vertex of the
+  // shared meshes within the user's epsilon (max 0.88 epsilon, fandisk at 1e-4); 1 already gives
+  // 3.4 epsilon on fandisk.
+  static FT bound_epsilon(FT accuracy) { return FT(0.25) * accuracy; }
+
+  // Radians added on both sides of a pseudo-source's fan (the paper says sqrt(epsilon); the
+  // reference code 3 sqrt(epsilon) of its remapped epsilon).
+  static FT fan_half_width(FT accuracy) { using std::sqrt; return FT(3) * sqrt(bound_epsilon(accuracy)); }
+
+  // ---- rounding ------------------------------------------------------------------------------
+
+  // Ties within this (relative to `scale`) are ties: distances are not compared more finely
+  // than rounding allows.
+  static FT rounding_margin(FT scale) { return FT(64) * std::numeric_limits<FT>::epsilon() * scale; }
+
+  // Radians by which a saddle's shadow cone is widened for rounding (emitting more is safe).
+  static FT shadow_widening() { using std::sqrt; return FT(8) * sqrt(rounding_margin(FT(1))); }
+
+  // Slopes of distance differences come from distances minus sigma, which cancellation may
+  // cost up to sqrt(machine epsilon) of.
+  static FT slope_slack() { using std::sqrt; return sqrt(std::numeric_limits<FT>::epsilon()); }
+
+  // A vertex whose angle sum is below 2 pi by less than this (relative) is treated as a saddle
+  // (see Unfolded_mesh: leaning towards saddles is the safe side).
+  static FT flat_tolerance() { return FT(1e-6); }
+
+  // ---- input geometry the propagation can finish on (user manual: input policy) ----------------
+
+  // Windows wrap around a sliver tube a number of times that grows like the slivers'
+  // length / height, and around a cone about pi / (cone angle) times.
+  static FT max_sliver_ratio() { return FT(1e10); }
+  static FT min_cone_angle() { return FT(1e-4); }
+
+  // ---- patches and rounds (Parallel_tag, and memory locality for any tag) --------------------
+
+  // Patches have at least this many faces, and a mesh at most this many patches; their number
+  // depends on the mesh only, never on the number of threads.
+  static std::size_t min_patch_faces() { return 2048; }
+  static std::size_t max_patches() { return 256; }
+
+  // A round pops vertices up to this many mean edge lengths beyond the nearest: on bunny_1M
+  // (1e-6, 730 rounds) 1 to 8 edges change the time by less than the noise; wider bands pop
+  // vertices before the windows from other patches can shorten them (windows: +0.1% at 1, +2% at 8).
+  static FT band_in_edges() { return FT(4); }
+
+  static FT pi() { return FT(CGAL_PI); }
+};
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_TUNING_H

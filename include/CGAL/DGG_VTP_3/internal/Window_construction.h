@@ -1,0 +1,86 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_WINDOW_CONSTRUCTION_H
+#define CGAL_DGG_VTP_3_INTERNAL_WINDOW_CONSTRUCTION_H
+
+#include <CGAL/DGG_VTP_3/internal/Distance_bound.h>
+#include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Window.h>
+#include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
+
+#include <limits>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// Where windows come from: a pseudo-source lighting the edge opposite one of its corners, and a
+// window crossing the face of its halfedge (a -> b, apex c) into its two children.
+
+// The full-edge window that a pseudo-source at distance `sigma`, at the corner of halfedge `h`,
+// sends across the edge opposite it, in the frame of that edge's neighbouring halfedge (the
+// caller checks that there is one). Its CH-relay vertices are the ends of the edge (paper,
+// Algorithm 1, line 3), and its distance bound follows from them (+inf in the exact mode,
+// `bound_epsilon` 0).
+template <class FT>
+inline Window<FT> window_across_corner(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index h, FT sigma,
+                                FT bound_epsilon)
+{
+  using Mesh = Unfolded_mesh<FT>;
+  const auto across = Mesh::next(h); // the edge opposite the pseudo-source; its apex
+  const FT len = mesh.length(across);
+  const Vec2<FT> apex = mesh.apex(across);
+  Window<FT> w;
+  w.b0 = FT(0);
+  w.b1 = len;
+  w.source = Vec2<FT>{len - apex.x, -apex.y}; // the same triangle seen from the other side
+  w.sigma = sigma;
+  w.relay_left = mesh.length(Mesh::prev(h));
+  w.relay_right = mesh.length(h);
+  w.d_max = bound_epsilon > FT(0) ? distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, bound_epsilon)
+                                  : std::numeric_limits<FT>::infinity();
+  return w;
+}
+
+// The child of `w` on edge (a, c), in the frame of the neighbouring halfedge a -> c (of length
+// `len`), from the rays of `w` through [b0, min(end, x)], `x` being where the ray to c crosses
+// the base. False if that is empty.
+template <class FT>
+inline bool left_child(const Window<FT>& w, const Vec2<FT>& c, FT x, FT end, FT len, Window<FT>& child)
+{
+  const Vec2<FT> a{FT(0), FT(0)};
+  const FT u0 = ray_segment_parameter(w.source, Vec2<FT>{w.b0, FT(0)}, a, c);
+  const FT u1 = x < end ? FT(1) : ray_segment_parameter(w.source, Vec2<FT>{end, FT(0)}, a, c);
+  if(!(u0 < u1))
+    return false;
+  child = w;
+  child.b0 = u0 * len;
+  child.b1 = u1 * len;
+  child.source = to_neighbour_frame(w.source, a, c, len);
+  return true;
+}
+
+// The child of `w` on edge (b, c), in the frame of the neighbouring halfedge c -> b (of length
+// `len`), from the rays of `w` through [max(start, x), b1]; `b` = (base length, 0).
+template <class FT>
+inline bool right_child(const Window<FT>& w, const Vec2<FT>& b, const Vec2<FT>& c, FT x, FT start, FT len, Window<FT>& child)
+{
+  const FT v0 = start < x ? FT(0) : ray_segment_parameter(w.source, Vec2<FT>{start, FT(0)}, c, b);
+  const FT v1 = ray_segment_parameter(w.source, Vec2<FT>{w.b1, FT(0)}, c, b);
+  if(!(v0 < v1))
+    return false;
+  child = w;
+  child.b0 = v0 * len;
+  child.b1 = v1 * len;
+  child.source = to_neighbour_frame(w.source, c, b - c, len);
+  return true;
+}
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_WINDOW_CONSTRUCTION_H

@@ -1,0 +1,310 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_WINDOW_PRUNING_H
+#define CGAL_DGG_VTP_3_INTERNAL_WINDOW_PRUNING_H
+
+#include <CGAL/DGG_VTP_3/internal/Tuning.h>
+#include <CGAL/DGG_VTP_3/internal/Window.h>
+#include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// The pruning rules, as geometry on windows of one window list: all in the frame of the list's
+// halfedge (a = (0, 0), b = (length, 0), the apex c above).
+
+// moves one end of the interval to `t` if `t` lies strictly inside it; a crossing that
+// rounding puts outside (or a NaN) leaves the window whole, which is always safe
+template <class FT>
+inline void shrink_to(const Window<FT>& w, FT t, FT& end)
+{
+  if(w.b0 < t && t < w.b1)
+    end = t;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The ICH rule (Xin and Wang), applied as trimming: the part of the interval where reaching the
+// edge through its end vertex a (or b) is strictly shorter carries no shortest path, here or
+// beyond. Along the edge `sigma + |p - s| - |p - a|` only decreases, so that part is a prefix
+// (a suffix for b) found in closed form. `da`, `db`: the distances of a and b (+inf: not
+// reached). Returns false when nothing of the window is left.
+template <class FT>
+inline bool trim_by_end_vertices(Window<FT>& w, FT len, FT da, FT db)
+{
+  const FT inf = std::numeric_limits<FT>::infinity();
+  const FT sx = w.source.x;
+  const FT ss = sx * sx + w.source.y * w.source.y;
+  if(da < inf)
+  {
+    // reaching p = (t, 0) through a costs da + t (a margin keeps rounding from trimming ties)
+    const FT k = da + Tuning<FT>::rounding_margin(da + len) - w.sigma;
+    if(w.distance_to_base_point(w.b1) > k + w.sigma + w.b1)
+      return false;
+    if(w.distance_to_base_point(w.b0) > k + w.sigma + w.b0)
+      shrink_to(w, (ss - k * k) / (FT(2) * (k + sx)), w.b0);
+  }
+  if(db < inf)
+  {
+    // through b it costs db + len - t
+    const FT k = db + Tuning<FT>::rounding_margin(db + len) + len - w.sigma;
+    if(w.distance_to_base_point(w.b0) > k + w.sigma - w.b0)
+      return false;
+    if(w.distance_to_base_point(w.b1) > k + w.sigma - w.b1)
+      shrink_to(w, (k * k - ss) / (FT(2) * (k - sx)), w.b1);
+  }
+  return w.b0 < w.b1;
+}
+
+// ---------------------------------------------------------------------------------------------
+// "One angle, two sides"
+
+// A window of a list seen from the apex c: where its ray to c crosses the edge, and its distance
+// to c along that ray if the crossing lies in its interval (+inf: it does not light c)
+template <class FT>
+struct Toward_apex
+{
+  FT crossing;
+  FT distance;
+};
+
+// The part of a window's interval whose rays may still go left of the apex c (those up to
+// `left_end`) and right of it (from `right_start` on), given the best window B to c.
+template <class FT>
+struct Sides
+{
+  FT left_end;
+  FT right_start;
+};
+
+// A shortest path does not cross B's path to c where B is there first. If w's own way to c
+// (straight when it lights c, else through its nearer end) is no shorter than B's, then B is
+// first at every point of its path that a ray of w reaches (else that ray, then B's path, would
+// reach c sooner), so w keeps only the rays that stay on their side of B's path: above the edge,
+// those that pass c on B's side of B's crossing; below it, those that did not cut B's segment
+// from its pseudo-source. Below the edge, the two windows' unfoldings are known to be the same
+// surface only inside w's lit triangle, so that test applies only when w's interval contains
+// B's crossing. In DGG-VTP B's path is itself approximate, and cutting w behind it loses
+// accuracy unless w is clearly worse: by more than the relative `tolerance` (0 in the exact
+// mode); otherwise only the classic rule applies, a window lighting c wholly on one side of B's
+// crossing keeps only its child on that side.
+template <class FT>
+inline Sides<FT> sides_of_best_path(const Window<FT>& w, const Toward_apex<FT>& t, const Vec2<FT>& c,
+                             const Window<FT>& best, FT best_crossing, FT best_distance, FT tolerance)
+{
+  using Point = Vec2<FT>;
+  const FT inf = std::numeric_limits<FT>::infinity();
+  const bool lights_apex = t.distance < inf;
+  FT to_c = t.distance;
+  if(!lights_apex)
+  {
+    const FT end = t.crossing < w.b0 ? w.b0 : w.b1;
+    to_c = w.distance_to_base_point(end) + length(c - Point{end, FT(0)});
+  }
+  Sides<FT> keep{w.b1, w.b0};
+  if(to_c >= best_distance * (FT(1) + tolerance))
+  {
+    keep.left_end = (std::min)(best_crossing, w.b1);
+    keep.right_start = (std::max)(best_crossing, w.b0);
+    if(w.b0 < best_crossing && best_crossing < w.b1)
+    {
+      // a ray of w that meets the edge on the other side of B's line than w's source crossed
+      // that line below the edge; on B's segment [s_B, (best_crossing, 0)] (not beyond s_B) up
+      // to the ray through s_B, which meets the edge at beyond_sB (all of them if s_B is not
+      // nearer the edge than w's source)
+      const Point& sB = best.source;
+      const FT side = cross(Point{best_crossing - sB.x, -sB.y}, w.source - sB);
+      const bool sB_nearer = sB.y > w.source.y;
+      const FT beyond_sB = sB_nearer ? x_axis_crossing(w.source, sB) : FT(0);
+      if(side < FT(0))
+        keep.left_end = sB_nearer ? (std::min)(best_crossing, beyond_sB) : -inf;
+      else if(side > FT(0))
+        keep.right_start = sB_nearer ? (std::max)(best_crossing, beyond_sB) : inf;
+    }
+  }
+  else if(lights_apex)
+  {
+    if(w.b0 >= best_crossing)
+      keep.left_end = w.b0;
+    if(w.b1 <= best_crossing)
+      keep.right_start = w.b1;
+  }
+  return keep;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Pairwise trimming (as in MMP and VTP): where two windows of one list overlap, the part of one
+// that is everywhere farther than the other carries no shortest path and is cut off. Exact mode
+// only: against approximate windows it loses the paths the bound's relays stand for.
+
+// The points of (lo, hi) where the two windows give equal distances: sigma_u + r_u = sigma_w + r_w.
+// Squaring twice gives a quadratic; its spurious roots only add harmless piece boundaries.
+template <class FT>
+inline int equal_distance_points(const Window<FT>& u, const Window<FT>& w, FT lo, FT hi, FT* out)
+{
+  const FT xu = u.source.x, yu = u.source.y, xw = w.source.x, yw = w.source.y;
+  const FT delta = w.sigma - u.sigma;
+  // r_u^2 - r_w^2 = A t + B, so A t + B - delta^2 = 2 delta r_w
+  const FT A = FT(2) * (xw - xu);
+  const FT C = (xu * xu + yu * yu - xw * xw - yw * yw) - delta * delta;
+  const FT d2 = FT(4) * delta * delta;
+  const FT a = A * A - d2;
+  const FT b = FT(2) * A * C + d2 * FT(2) * xw;
+  const FT c = C * C - d2 * (xw * xw + yw * yw);
+  int n = 0;
+  auto keep = [&](FT t) { if(lo < t && t < hi) out[n++] = t; };
+  const FT scale = (std::max)((std::abs)(a), (std::max)((std::abs)(b), (std::abs)(c)));
+  if(!(scale > FT(0)))
+    return 0;
+  if((std::abs)(a) <= Tuning<FT>::rounding_margin(scale))
+  {
+    if(b != FT(0))
+      keep(-c / b);
+    return n;
+  }
+  const FT disc = b * b - FT(4) * a * c;
+  if(disc < FT(0))
+    return 0;
+  using std::sqrt;
+  const FT q = -(b + (b < FT(0) ? -sqrt(disc) : sqrt(disc))) / FT(2);
+  keep(q / a);
+  if(q != FT(0))
+    keep(c / q);
+  return n;
+}
+
+// `x` is farther on the pieces [cuts[k], cuts[k+1]] with farther[k] == -1: cut off the run of
+// such pieces at either end of the overlap, where that end is also an end of `x`
+template <class FT>
+inline void cut_where_farther(Window<FT>& x, const FT* cuts, const int* farther, int pieces)
+{
+  int first = 0;
+  while(first < pieces && farther[first] == -1)
+    ++first;
+  int last = pieces;
+  while(last > first && farther[last - 1] == -1)
+    --last;
+  const bool starts_x = cuts[0] == x.b0;
+  const bool ends_x = cuts[pieces] == x.b1;
+  if(first == pieces) // farther on the whole overlap
+  {
+    if(starts_x && ends_x)
+      x.b1 = x.b0;
+    else if(starts_x)
+      x.b0 = cuts[pieces];
+    else if(ends_x)
+      x.b1 = cuts[0];
+    return;
+  }
+  if(starts_x && first > 0)
+    x.b0 = cuts[first];
+  if(ends_x && last < pieces)
+    x.b1 = cuts[last];
+}
+
+// `u` starts no later than `w`. Their overlap is cut where D_u - D_w = 0 (a hyperbola meets the
+// edge at most twice); on each piece in between the difference has one sign, which the
+// piece's middle tells: its ends are roots or near-ties, so only a clear contradiction there
+// leaves the piece alone. A piece where the two tie within rounding goes to `u`.
+template <class FT>
+inline void trim_pair(Window<FT>& u, Window<FT>& w)
+{
+  const FT lo = (std::max)(u.b0, w.b0);
+  const FT hi = (std::min)(u.b1, w.b1);
+  if(!(lo < hi))
+    return;
+  const FT du_lo = u.distance_to_base_point(lo);
+  const FT du_hi = u.distance_to_base_point(hi);
+  const FT m = Tuning<FT>::rounding_margin((std::max)(du_lo, du_hi));
+  const auto difference = [&](FT x) { return u.distance_to_base_point(x) - w.distance_to_base_point(x); };
+  const FT f_lo = du_lo - w.distance_to_base_point(lo);
+  const FT f_hi = du_hi - w.distance_to_base_point(hi);
+
+  // per piece, the sign of D_u - D_w: +1 u is farther, -1 w is farther or they tie, 0 unknown
+  FT cuts[4] = {lo, hi, hi, hi};
+  int sign[3];
+  int pieces = 1;
+  // The slope of D_u - D_w is cos_u - cos_w, the cosines of the rays with the edge, each
+  // increasing along it: slopes in [a, b] bound the difference on the overlap from both sides
+  // by lines through its ends, and when those bounds keep one sign, no root search is needed.
+  const FT slack = Tuning<FT>::slope_slack();
+  const FT a = (lo - u.source.x) / (du_lo - u.sigma) - (hi - w.source.x) / (du_hi - f_hi - w.sigma) - slack;
+  const FT b = (hi - u.source.x) / (du_hi - u.sigma) - (lo - w.source.x) / (du_lo - f_lo - w.sigma) + slack;
+  const FT len = hi - lo;
+  const FT lowest = (a >= FT(0)) ? f_lo : (b <= FT(0)) ? f_hi
+                  : f_lo + a * (f_hi - f_lo - b * len) / (a - b);
+  const FT highest = (a >= FT(0)) ? f_hi : (b <= FT(0)) ? f_lo
+                   : f_lo + b * (f_hi - f_lo - a * len) / (b - a);
+  if(lowest > m)
+    sign[0] = 1;
+  else if(highest < -m)
+    sign[0] = -1;
+  else
+  {
+    int n = 1;
+    n += equal_distance_points(u, w, lo, hi, cuts + n);
+    cuts[n++] = hi;
+    if(n == 4 && cuts[2] < cuts[1])
+      std::swap(cuts[1], cuts[2]);
+    FT at_cut[4];
+    at_cut[0] = f_lo;
+    at_cut[n - 1] = f_hi;
+    for(int k = 1; k + 1 < n; ++k)
+      at_cut[k] = difference(cuts[k]);
+    pieces = n - 1;
+    for(int k = 0; k < pieces; ++k)
+    {
+      const FT at_middle = difference((cuts[k] + cuts[k + 1]) / FT(2));
+      const FT fmin = (std::min)(at_cut[k], at_cut[k + 1]);
+      const FT fmax = (std::max)(at_cut[k], at_cut[k + 1]);
+      if(at_middle > m)
+        sign[k] = fmin > -m ? 1 : 0;
+      else if(at_middle < -m)
+        sign[k] = fmax < m ? -1 : 0;
+      else
+        sign[k] = fmin > -m && fmax < m ? -1 : 0;
+    }
+  }
+  int opposite_sign[3];
+  for(int k = 0; k < pieces; ++k)
+    opposite_sign[k] = -sign[k];
+  cut_where_farther(w, cuts, sign, pieces);
+  cut_where_farther(u, cuts, opposite_sign, pieces);
+}
+
+// trims every overlapping pair of `windows` (sorted by start on the way; `starts` is scratch)
+// and removes the windows left empty
+template <class FT>
+inline void trim_overlapping_windows(std::vector<Window<FT>>& windows, std::vector<FT>& starts)
+{
+  if(windows.size() < 2)
+    return;
+  std::sort(windows.begin(), windows.end(), [](const Window<FT>& a, const Window<FT>& b) { return a.b0 < b.b0; });
+  starts.resize(windows.size());
+  for(std::size_t i = 0; i < windows.size(); ++i)
+    starts[i] = windows[i].b0;
+  for(std::size_t i = 0; i < windows.size(); ++i)
+    for(std::size_t j = i + 1; j < windows.size() && starts[j] < windows[i].b1; ++j)
+      if(windows[i].b0 < windows[i].b1)
+        trim_pair(windows[i], windows[j]);
+  std::size_t kept = 0;
+  for(const Window<FT>& w : windows)
+    if(w.b0 < w.b1)
+      windows[kept++] = w;
+  windows.resize(kept);
+}
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_WINDOW_PRUNING_H
