@@ -17,7 +17,9 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <array>
 #include <cstring>
+#include <iterator>
 #include <type_traits>
 
 using namespace dggvtp_test;
@@ -210,6 +212,58 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(one_propagation_is_the_same_for_any_thread_count, 
 }
 
 // the checks come before any propagation: nothing is written when one of them fails
+// Surface-point sources, point targets, early termination and nearest-source labels: the same bits
+// for any number of threads too (bunny: 36 patches, the sources' first windows cross patches)
+BOOST_AUTO_TEST_CASE(surface_points_and_early_stop_are_the_same_for_any_thread_count)
+{
+  using Mesh = Sm_d::Mesh;
+  namespace DP = CGAL::DGG_VTP_3::parameters;
+  using Location = std::pair<Mesh::Face_index, std::array<double, 3>>;
+  const Mesh mesh = make_mesh<Mesh>(read_soup("bunny.ply"));
+  const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
+  const std::vector<Location> sources = {Location(Mesh::Face_index(100), {0.2, 0.3, 0.5}),
+                                         Location(Mesh::Face_index(40000), {0.5, 0.5, 0.})};
+  const std::vector<Location> targets = {Location(Mesh::Face_index(7000), {0.1, 0.6, 0.3}),
+                                         Location(Mesh::Face_index(30000), {0.3, 0.3, 0.4})};
+  for(double accuracy : {0., 1e-6})
+  {
+    const auto run = [&](auto tag, std::vector<double>& at_targets, std::vector<std::size_t>& labels) {
+      auto d = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+      auto l = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
+      at_targets.clear();
+      solver.template compute_distances_to_nearest_source<decltype(tag)>(
+        sources, d, DP::nearest_source_map(l, DP::target_distances(std::back_inserter(at_targets),
+                                                                    DP::targets(targets))).accuracy(accuracy));
+      labels.clear();
+      std::vector<double> out;
+      for(auto v : vertices(mesh))
+      {
+        out.push_back(get(d, v));
+        labels.push_back(get(l, v));
+      }
+      return out;
+    };
+    std::vector<double> expected_targets, got_targets;
+    std::vector<std::size_t> expected_labels, got_labels;
+    const std::vector<double> expected = run(CGAL::Sequential_tag(), expected_targets, expected_labels);
+    BOOST_TEST(expected_targets.size() == targets.size());
+#ifdef CGAL_LINKED_WITH_TBB
+    for(int threads : {1, 2, 4})
+    {
+      const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      const std::vector<double> got = run(CGAL::Parallel_tag(), got_targets, got_labels);
+      std::size_t differences = 0;
+      for(std::size_t i = 0; i < got.size(); ++i)
+        differences += !same_bits(got[i], expected[i]);
+      BOOST_TEST(differences == 0u, threads << " threads, accuracy " << accuracy);
+      BOOST_TEST(got_labels == expected_labels, boost::test_tools::per_element());
+      for(std::size_t k = 0; k < targets.size(); ++k)
+        BOOST_TEST(same_bits(got_targets[k], expected_targets[k]));
+    }
+#endif
+  }
+}
+
 BOOST_AUTO_TEST_CASE(bad_arguments_are_refused_before_any_work)
 {
   using Mesh = CGAL::Surface_mesh<Epick::Point_3>;

@@ -279,8 +279,9 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(named_parameter_index_maps, Config, All_configurat
     mesh, 12, nullptr, CGAL::parameters::vertex_index_map(vim).face_index_map(fim));
   check_distances(d_maps, d, 12, Config::tolerance, "prism " + config_name<Config>() + " with reversed index maps");
 
-  // the class, with the index map type as template argument
-  const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh, CGAL::Default, std::decay_t<decltype(vim)>>
+  // the class, with the index map types as template arguments
+  const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh, CGAL::Default, std::decay_t<decltype(vim)>,
+                                                  std::decay_t<decltype(fim)>>
     solver(mesh, CGAL::parameters::vertex_index_map(vim).face_index_map(fim));
   BOOST_TEST(solver_distances(solver, mesh, 12) == d_maps, boost::test_tools::per_element());
 }

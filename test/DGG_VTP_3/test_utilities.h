@@ -208,7 +208,7 @@ inline Error_report relative_error(const std::vector<double>& computed, const st
 {
   Error_report r;
   BOOST_REQUIRE_EQUAL(computed.size(), truth.size());
-  r.at_source = computed[source_index];
+  r.at_source = source_index < computed.size() ? computed[source_index] : 0.; // none: a source inside a face
   for(std::size_t i = 0; i < computed.size(); ++i)
   {
     if(i == source_index)
@@ -228,7 +228,8 @@ inline Error_report relative_error(const std::vector<double>& computed, const st
   return r;
 }
 
-// asserts that `computed` matches `truth` within `tolerance` (relative) and prints the figures
+// asserts that `computed` matches `truth` within `tolerance` (relative) and prints the figures;
+// `source_index` is the source vertex (out of range: the source is not a vertex)
 inline void check_distances(const std::vector<double>& computed, const std::vector<double>& truth,
                             std::size_t source_index, double tolerance, const std::string& label)
 {

@@ -7,7 +7,10 @@
 #define CGAL_DGG_VTP_3_GEODESIC_DISTANCE_SOLVER_H
 
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
+#include <CGAL/DGG_VTP_3/parameters.h>
 #include <CGAL/DGG_VTP_3/internal/Effective_concurrency_tag.h>
+#include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
+#include <CGAL/DGG_VTP_3/internal/Query_builder.h>
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
@@ -23,7 +26,10 @@
 #include <boost/graph/graph_traits.hpp>
 #include <boost/range/irange.hpp>
 
+#include <array>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -52,10 +58,19 @@ namespace DGG_VTP_3 {
  *         that way left vertices unreachable (float is kept for input and output).
  * \tparam VertexIndexMap the type of the vertex index map given to the constructor, by default the
  *         one `CGAL::get_initialized_vertex_index_map()` returns for the mesh.
+ * \tparam FaceIndexMap the type of the face index map given to the constructor, by default the
+ *         one `CGAL::get_initialized_face_index_map()` returns for the mesh.
+ *
+ * Sources and targets are vertices or points anywhere on the surface, as
+ * `CGAL::Polygon_mesh_processing::Face_location` (a face and barycentric coordinates): a point
+ * on an edge or at a vertex (zero coordinates) is that edge point or that vertex.
+ * `CGAL::Polygon_mesh_processing::locate()` (or `locate_with_AABB_tree()` for many points)
+ * gives the location of a 3D point.
  */
 template <class TriangleMesh,
           class GeomTraits = Default,
-          class VertexIndexMap = Default>
+          class VertexIndexMap = Default,
+          class FaceIndexMap = Default>
 class Geodesic_distance_solver
 {
 public:
@@ -63,7 +78,12 @@ public:
   using FT = typename Traits::FT;
   using Vertex_index_map = typename Default::Get<VertexIndexMap,
                              typename GetInitializedVertexIndexMap<TriangleMesh>::const_type>::type;
+  using Face_index_map = typename Default::Get<FaceIndexMap,
+                           typename GetInitializedFaceIndexMap<TriangleMesh>::const_type>::type;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  /// a point of the surface, the type of `CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, FT>`
+  using Face_location = std::pair<face_descriptor, std::array<FT, 3>>;
 
 private:
   using Computation_FT = typename std::conditional<std::is_same<FT, float>::value, double, FT>::type;
@@ -116,18 +136,25 @@ public:
   explicit Geodesic_distance_solver(const TriangleMesh& tm,
                                     const NamedParameters& np = parameters::default_values())
     : m_vim(get_initialized_vertex_index_map(tm, np))
+    , m_fim(get_initialized_face_index_map(tm, np))
   {
-    internal::unfold_triangle_mesh(
+    const std::vector<Index> order = internal::unfold_triangle_mesh(
       tm,
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                    get_const_property_map(CGAL::vertex_point, tm)),
-      m_vim, get_initialized_face_index_map(tm, np),
+      m_vim, m_fim,
       parameters::choose_parameter<Traits>(parameters::get_parameter(np, internal_np::geom_traits)),
       m_mesh);
     m_partition = internal::Patch_partition<Computation_FT>(m_mesh);
     m_vertices.resize(m_mesh.number_of_vertices());
     for(vertex_descriptor v : vertices(tm))
       m_vertices[static_cast<std::size_t>(get(m_vim, v))] = v;
+    m_faces.resize(m_mesh.number_of_faces());
+    for(face_descriptor f : faces(tm))
+      m_faces[static_cast<std::size_t>(get(m_fim, f))] = f;
+    m_internal_face.resize(order.size());
+    for(std::size_t f = 0; f < order.size(); ++f)
+      m_internal_face[order[f]] = Index(f);
   }
 
   /*!
@@ -141,7 +168,8 @@ public:
    *         `CGAL::Parallel_if_available_tag`. The distances and statistics are the same bit for
    *         bit whatever the tag and the number of threads. With an `FT` other than `float` and
    *         `double` (exact number types are not thread-safe), one thread does the work.
-   * \param source_vertex a vertex of the mesh given to the constructor
+   * \tparam Source `vertex_descriptor` or `CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, FT>`
+   * \param source a vertex or a point of the mesh given to the constructor
    * \param distances a writable vertex property map with value type `FT`
    * \param np an optional sequence of named parameters among the ones listed below
    *
@@ -152,42 +180,71 @@ public:
    *     \cgalParamType{`double`, finite and >= 0}
    *     \cgalParamDefault{`0`}
    *   \cgalParamNEnd
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::max_distance}
+   *     \cgalParamDescription{the propagation stops there: vertices farther get `+infinity`, the
+   *                           others their distance, as without it}
+   *     \cgalParamType{`double`, >= 0 (`+infinity` allowed)}
+   *     \cgalParamDefault{`+infinity`}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::targets}
+   *     \cgalParamDescription{the propagation stops as soon as the distances of these are final;
+   *                           the other vertices then hold an upper bound of their distance (the
+   *                           length of a path on the surface), or `+infinity` if not reached yet}
+   *     \cgalParamType{a range of `vertex_descriptor` or of `Face_location`}
+   *     \cgalParamDefault{none: every vertex}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::target_distances}
+   *     \cgalParamDescription{receives the distance of each target, in the order of `targets`: at
+   *                           a surface point, the exact distance (within the accuracy), not an
+   *                           interpolation}
+   *     \cgalParamType{an output iterator accepting `FT`}
+   *     \cgalParamDefault{none}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::nearest_source_map}
+   *     \cgalParamDescription{receives, per vertex, the number of its nearest source in the order
+   *                           of the sources (`std::size_t(-1)` where unreachable)}
+   *     \cgalParamType{a writable vertex property map with value type `std::size_t`}
+   *     \cgalParamDefault{none}
+   *   \cgalParamNEnd
    * \cgalNamedParamsEnd
    *
    * \returns what the propagation did
-   * \throws std::invalid_argument if `source_vertex` is not a vertex of the mesh or the accuracy
-   *         is negative or not finite.
+   * \throws std::invalid_argument if `source` is not a vertex or a point of the mesh (the face
+   *         of another mesh, barycentric coordinates that are not finite, negative beyond rounding
+   *         or do not add up to 1), the accuracy is negative or not finite, or the maximum
+   *         distance is negative or NaN; the same for the targets.
    */
-  template <class ConcurrencyTag = Sequential_tag, class VertexDistanceMap,
+  template <class ConcurrencyTag = Sequential_tag, class Source, class VertexDistanceMap,
             class NamedParameters = parameters::Default_named_parameters>
-  Propagation_statistics compute_distances(vertex_descriptor source_vertex,
+  Propagation_statistics compute_distances(const Source& source,
                                            VertexDistanceMap distances,
                                            const NamedParameters& np = parameters::default_values()) const
   {
-    return compute_distances_to_nearest_source<ConcurrencyTag>(std::vector<vertex_descriptor>(1, source_vertex),
-                                                               distances, np);
+    return compute_distances_to_nearest_source<ConcurrencyTag>(std::vector<Source>(1, source), distances, np);
   }
 
   /*!
    * the same with several sources: the distance of each vertex to the nearest of them.
    *
    * \tparam ConcurrencyTag as for `compute_distances()`
-   * \tparam VertexRange a range of `vertex_descriptor`
+   * \tparam SourceRange a range of `vertex_descriptor` or of `Face_location`
    * \param np the named parameters of `compute_distances()`
-   * \throws std::invalid_argument if `sources` is empty or has an element that is not a vertex of
-   *         the mesh, or if the accuracy is negative or not finite.
+   * \throws std::invalid_argument if `sources` is empty, for an element that `compute_distances()`
+   *         refuses as source, or for its named parameters.
    */
-  template <class ConcurrencyTag = Sequential_tag, class VertexRange, class VertexDistanceMap,
+  template <class ConcurrencyTag = Sequential_tag, class SourceRange, class VertexDistanceMap,
             class NamedParameters = parameters::Default_named_parameters>
-  Propagation_statistics compute_distances_to_nearest_source(const VertexRange& sources,
+  Propagation_statistics compute_distances_to_nearest_source(const SourceRange& sources,
                                                              VertexDistanceMap distances,
                                                              const NamedParameters& np = parameters::default_values()) const
   {
     const Computation_FT accuracy = checked_accuracy(np);
-    const std::vector<Index> indices = checked_indices(sources);
-    if(indices.empty())
+    internal::Propagation_query<Computation_FT> query;
+    builder().add_sources(sources, query);
+    if(query.vertex_sources.empty() && query.point_sources.empty())
       throw std::invalid_argument("no source given");
-    return propagate<ConcurrencyTag>(indices, accuracy, distances);
+    const auto targets = add_query_options(np, query);
+    return propagate<ConcurrencyTag>(query, accuracy, distances, np, targets);
   }
 
   /*!
@@ -224,8 +281,11 @@ public:
 
     std::vector<Propagation_statistics> statistics(indices.size());
     CGAL::for_each<Effective_tag<ConcurrencyTag>>(boost::irange(std::size_t(0), indices.size()), [&](std::size_t k) {
-      statistics[k] = propagate<Sequential_tag>(std::vector<Index>(1, indices[k]), accuracy,
-                                                *(std::begin(distance_maps) + k));
+      internal::Propagation_query<Computation_FT> query;
+      query.vertex_sources.push_back(indices[k]);
+      query.source_numbers.push_back(0);
+      statistics[k] = propagate<Sequential_tag>(query, accuracy, *(std::begin(distance_maps) + k),
+                                                parameters::default_values(), std::vector<std::pair<bool, Index>>());
       return true;
     });
     return statistics;
@@ -262,22 +322,92 @@ private:
   template <class ConcurrencyTag>
   using Effective_tag = typename internal::Effective_concurrency_tag<ConcurrencyTag, Computation_FT>::type;
 
-  template <class ConcurrencyTag, class VertexDistanceMap>
-  Propagation_statistics propagate(const std::vector<Index>& sources, Computation_FT accuracy,
-                                   VertexDistanceMap distances) const
+  using Builder = internal::Query_builder<TriangleMesh, Vertex_index_map, Face_index_map, Mesh, Computation_FT>;
+  Builder builder() const { return Builder(m_vim, m_vertices, m_fim, m_faces, m_internal_face, m_mesh); }
+
+  // the early termination of the named parameters; returns where each target is
+  template <class NamedParameters>
+  std::vector<std::pair<bool, Index>> add_query_options(const NamedParameters& np,
+                                                        internal::Propagation_query<Computation_FT>& query) const
+  {
+    const double max_distance = parameters::choose_parameter(
+      parameters::get_parameter(np, internal_np::max_distance_t()), std::numeric_limits<double>::infinity());
+    if(!(max_distance >= 0.))
+      throw std::invalid_argument("the maximum distance must be a number >= 0");
+    query.max_distance = Computation_FT(max_distance);
+    query.record_origins =
+      !parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value;
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value)
+      return builder().add_targets(parameters::get_parameter(np, internal_np::targets_t()), query);
+    else
+      return std::vector<std::pair<bool, Index>>();
+  }
+
+  template <class ConcurrencyTag, class VertexDistanceMap, class NamedParameters>
+  Propagation_statistics propagate(const internal::Propagation_query<Computation_FT>& query, Computation_FT accuracy,
+                                   VertexDistanceMap distances, const NamedParameters& np,
+                                   const std::vector<std::pair<bool, Index>>& targets) const
   {
     internal::Window_propagation<Computation_FT> propagation(m_mesh, m_partition, accuracy);
-    propagation.template run<Effective_tag<ConcurrencyTag>>(sources);
+    propagation.template run<Effective_tag<ConcurrencyTag>>(query);
     const std::vector<Computation_FT>& d = propagation.distances();
     for(std::size_t i = 0; i < m_vertices.size(); ++i)
       put(distances, m_vertices[i], FT(d[i]));
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::target_distances_t>::value)
+    {
+      auto out = parameters::get_parameter(np, internal_np::target_distances_t());
+      std::vector<Computation_FT> at_points;
+      propagation.point_target_distances(at_points, nullptr);
+      for(const auto& t : targets)
+      {
+        const Computation_FT dt = t.first ? d[t.second] : at_points[t.second];
+        *out++ = FT(dt > query.max_distance ? std::numeric_limits<Computation_FT>::infinity() : dt);
+      }
+    }
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value)
+    {
+      auto labels = parameters::get_parameter(np, internal_np::nearest_source_map_t());
+      const std::vector<std::size_t> nearest = nearest_sources(propagation.origins());
+      for(std::size_t i = 0; i < m_vertices.size(); ++i)
+        put(labels, m_vertices[i], d[i] < std::numeric_limits<Computation_FT>::infinity() ? nearest[i] : std::size_t(-1));
+    }
     return propagation.statistics();
   }
 
+  // Per vertex, the number of the source its path starts from: the pseudo-source of its path is a
+  // source, or a vertex whose own path starts from a source, and so on.
+  static std::vector<std::size_t> nearest_sources(const std::vector<Index>& origin)
+  {
+    const Index nv = Index(origin.size());
+    const std::size_t unknown = std::size_t(-2), none = std::size_t(-1);
+    std::vector<std::size_t> nearest(nv, unknown);
+    std::vector<Index> chain;
+    for(Index v = 0; v < nv; ++v)
+    {
+      Index u = v;
+      while(u < nv && nearest[u] == unknown)
+      {
+        chain.push_back(u);
+        nearest[u] = none; // a cycle (rounding could make one) ends here, unlabelled
+        u = origin[u];
+      }
+      const std::size_t label = u < nv ? nearest[u]
+                              : u == internal::Window_propagation<Computation_FT>::no_origin() ? none
+                              : std::size_t(u - nv);
+      for(Index c : chain)
+        nearest[c] = label;
+      chain.clear();
+    }
+    return nearest;
+  }
+
   Vertex_index_map m_vim;                    // user's vertex -> internal index
+  Face_index_map m_fim;                      // user's face -> user's face index
   Mesh m_mesh;                               // intrinsic geometry and combinatorics
   internal::Patch_partition<Computation_FT> m_partition; // the faces cut into patches for the propagation's rounds
   std::vector<vertex_descriptor> m_vertices; // internal index -> user's vertex
+  std::vector<face_descriptor> m_faces;      // user's face index -> user's face
+  std::vector<Index> m_internal_face;        // user's face index -> internal face
 };
 
 } // namespace DGG_VTP_3

@@ -81,9 +81,11 @@ compute_geodesic_distances(const TriangleMesh& tm,
 {
   using Traits = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
   using Vertex_index_map = typename GetInitializedVertexIndexMap<TriangleMesh, NamedParameters>::const_type;
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  const Geodesic_distance_solver<TriangleMesh, Traits, Vertex_index_map> solver(tm, np);
-  if constexpr(std::is_convertible<Sources, vertex_descriptor>::value)
+  using Face_index_map = typename GetInitializedFaceIndexMap<TriangleMesh, NamedParameters>::const_type;
+  using Solver = Geodesic_distance_solver<TriangleMesh, Traits, Vertex_index_map, Face_index_map>;
+  const Solver solver(tm, np);
+  if constexpr(std::is_convertible<Sources, typename Solver::vertex_descriptor>::value ||
+               std::is_convertible<Sources, typename Solver::Face_location>::value)
     return solver.template compute_distances<ConcurrencyTag>(sources, distances, np);
   else
     return solver.template compute_distances_to_nearest_source<ConcurrencyTag>(sources, distances, np);

@@ -33,12 +33,13 @@ namespace internal {
 //
 // `Propagation` runs Algorithm 1 on one patch at a time; what the scheduler asks of it:
 //   FT nearest_queued(p)            drops superseded queue entries, the nearest left (+inf: none)
-//   bool has_work(p)                vertices queued or window lists scheduled
+//   bool has_lists_to_propagate(p)  window lists scheduled in p's FIFO
 //   void run_round(p, limit)
 //   std::size_t take_peak(p)        windows alive at once in p since the last call
 //   void receive(p, message)        for each kind of message below
 //   bool schedule_stranded_lists(active)
 //   const std::vector<FT>& distances()
+//   FT stop_limit()                 no vertex beyond this needs to be popped (+inf: all of them)
 template <class FT>
 class Round_scheduler
 {
@@ -56,6 +57,7 @@ public:
     Index vertex;
     FT distance;
     FT back;
+    Index origin;
   };
   struct Face_message
   {
@@ -107,15 +109,17 @@ public:
     {
       FT nearest = std::numeric_limits<FT>::infinity();
       active.clear();
+      const FT stop = propagation.stop_limit();
       for(Index p = 0; p < m_partition.size(); ++p)
       {
-        nearest = (std::min)(nearest, propagation.nearest_queued(p));
-        if(propagation.has_work(p))
+        const FT queued = propagation.nearest_queued(p);
+        nearest = (std::min)(nearest, queued);
+        if(propagation.has_lists_to_propagate(p) || (queued < std::numeric_limits<FT>::infinity() && queued <= stop))
           active.push_back(p);
       }
-      if(active.empty() && !propagation.schedule_stranded_lists(active))
+      if(active.empty() && (stop < std::numeric_limits<FT>::infinity() || !propagation.schedule_stranded_lists(active)))
         break;
-      const FT limit = nearest + m_partition.band();
+      const FT limit = (std::min)(nearest + m_partition.band(), stop);
       CGAL::for_each<ConcurrencyTag>(active, [&](Index p) { propagation.run_round(p, limit); return true; });
       // an upper bound of the windows alive at once during the round
       std::size_t peak = 0;
@@ -124,6 +128,13 @@ public:
       windows_peak = (std::max)(windows_peak, peak);
       deliver<ConcurrencyTag>(propagation, active);
     }
+  }
+
+  // delivers what was handed off outside the rounds (the sources' first windows and distances)
+  template <class ConcurrencyTag, class Propagation>
+  void deliver_now(Propagation& propagation)
+  {
+    deliver<ConcurrencyTag>(propagation, std::vector<Index>());
   }
 
 private:

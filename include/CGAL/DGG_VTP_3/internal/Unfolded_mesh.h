@@ -84,7 +84,7 @@ public:
   // would be hidden inside the class by the members of the same names)
   template <class FT_, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
             class GeomTraits>
-  friend void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
+  friend std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
                                    FaceIndexMap fim, const GeomTraits& gt, Unfolded_mesh<FT_>& out);
 
 private:
@@ -194,9 +194,10 @@ void reorder_faces(const std::vector<std::uint32_t>& order, Unfolded_mesh<FT>& o
   out.m_opposite.swap(opposite);
 }
 
+// Returns the order of the faces: new face i is the user's face order[i] (by the face index map).
 template <class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
           class GeomTraits>
-void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
+std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
                           FaceIndexMap fim, const GeomTraits& gt, Unfolded_mesh<FT>& out)
 {
   using Index = typename Unfolded_mesh<FT>::Index;
@@ -421,6 +422,7 @@ void unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexInde
   out.m_exact_pseudo_source.assign(nv, 0);
   for(std::size_t v = 0; v < nv; ++v)
     out.m_exact_pseudo_source[v] = out.m_singular[v] || out.m_angle_sum[v] > two_pi * (FT(1) - flat_tolerance);
+  return order;
 }
 
 } // namespace internal

@@ -8,6 +8,8 @@
 
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
+#include <cstdint>
+
 namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
@@ -28,6 +30,7 @@ struct Window
   FT relay_left;       // distance from the pseudo-source to the CH-relay vertex of the b0 side
   FT relay_right;      // distance from the pseudo-source to the CH-relay vertex of the b1 side
   FT d_max;            // distance bound: the window stops where it would go farther (+inf: never)
+  std::uint32_t origin; // its pseudo-source: a vertex, or (number of vertices + k) for the k-th source
 
   FT distance_to(const Vec2<FT>& p) const { return sigma + length(p - source); }
   FT distance_to_base_point(FT x) const { return sigma + length(Vec2<FT>{x - source.x, -source.y}); }

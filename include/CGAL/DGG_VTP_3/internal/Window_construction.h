@@ -20,29 +20,41 @@ namespace internal {
 // Where windows come from: a pseudo-source lighting the edge opposite one of its corners, and a
 // window crossing the face of its halfedge (a -> b, apex c) into its two children.
 
-// The full-edge window that a pseudo-source at distance `sigma`, at the corner of halfedge `h`,
-// sends across the edge opposite it, in the frame of that edge's neighbouring halfedge (the
-// caller checks that there is one). Its CH-relay vertices are the ends of the edge (paper,
-// Algorithm 1, line 3), and its distance bound follows from them (+inf in the exact mode,
-// `bound_epsilon` 0).
+// The full-edge window that a pseudo-source at `p` (in the frame of halfedge `e`, inside its face),
+// at distance `sigma`, sends across the edge of `e`, in the frame of the neighbouring halfedge
+// (the caller checks that there is one). Its CH-relay vertices are the ends of the edge (paper,
+// Algorithm 1, line 3), at distances `relay_left` (from the target of `e`, the start of the
+// neighbouring halfedge) and `relay_right`; its distance bound follows from them (+inf in the
+// exact mode, `bound_epsilon` 0).
 template <class FT>
-inline Window<FT> window_across_corner(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index h, FT sigma,
-                                FT bound_epsilon)
+inline Window<FT> window_from_point(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index e,
+                                    const Vec2<FT>& p, FT sigma, FT relay_left, FT relay_right, FT bound_epsilon,
+                                    std::uint32_t origin)
 {
-  using Mesh = Unfolded_mesh<FT>;
-  const auto across = Mesh::next(h); // the edge opposite the pseudo-source; its apex
-  const FT len = mesh.length(across);
-  const Vec2<FT> apex = mesh.apex(across);
+  const FT len = mesh.length(e);
   Window<FT> w;
   w.b0 = FT(0);
   w.b1 = len;
-  w.source = Vec2<FT>{len - apex.x, -apex.y}; // the same triangle seen from the other side
+  w.source = Vec2<FT>{len - p.x, -p.y}; // the same triangle seen from the other side
   w.sigma = sigma;
-  w.relay_left = mesh.length(Mesh::prev(h));
-  w.relay_right = mesh.length(h);
+  w.relay_left = relay_left;
+  w.relay_right = relay_right;
   w.d_max = bound_epsilon > FT(0) ? distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, bound_epsilon)
                                   : std::numeric_limits<FT>::infinity();
+  w.origin = origin;
   return w;
+}
+
+// The window that a pseudo-source vertex at distance `sigma`, at the corner of halfedge `h`,
+// sends across the edge opposite it.
+template <class FT>
+inline Window<FT> window_across_corner(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index h, FT sigma,
+                                       FT bound_epsilon, std::uint32_t origin)
+{
+  using Mesh = Unfolded_mesh<FT>;
+  const auto across = Mesh::next(h); // the edge opposite the pseudo-source; its apex
+  return window_from_point(mesh, across, mesh.apex(across), sigma, mesh.length(Mesh::prev(h)), mesh.length(h),
+                           bound_epsilon, origin);
 }
 
 // The child of `w` on edge (a, c), in the frame of the neighbouring halfedge a -> c (of length

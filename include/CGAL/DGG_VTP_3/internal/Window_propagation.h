@@ -9,6 +9,8 @@
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
 #include <CGAL/DGG_VTP_3/internal/Distance_bound.h>
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
+#include <CGAL/DGG_VTP_3/internal/Point_targets.h>
+#include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
 #include <CGAL/DGG_VTP_3/internal/Round_scheduler.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
@@ -77,17 +79,30 @@ public:
 
   static FT infinity() { return std::numeric_limits<FT>::infinity(); }
 
-  // The distance to the nearest of the sources: they all start at 0 and emit all around (line 1-8).
+  // The distance to the nearest of the sources: they all start at 0 and emit all around (lines
+  // 1-8), as far as the query needs.
   template <class ConcurrencyTag>
-  void run(const std::vector<Index>& sources)
+  void run(const Propagation_query<FT>& query)
   {
-    for(Index s : sources)
+    m_query = &query;
+    const Index nv = Index(m_distance.size());
+    if(query.record_origins)
+      m_origin.assign(nv, no_origin());
+    for(std::size_t k = 0; k < query.vertex_sources.size(); ++k)
     {
+      const Index s = query.vertex_sources[k];
       m_is_source[s] = 1;
       m_distance[s] = FT(0);
+      if(query.record_origins)
+        m_origin[s] = (std::min)(m_origin[s], nv + query.source_numbers[k]);
       m_scheduler.commit(s, FT(0));
       m_patches[m_partition.owner(s)].queue.push(Queue_entry(FT(0), s));
     }
+    m_targets = Point_targets<FT>(m_mesh, query.point_targets);
+    for(std::size_t k = 0; k < query.point_sources.size(); ++k)
+      emit_from_surface_point(query.point_sources[k], nv + query.source_numbers[query.vertex_sources.size() + k]);
+    if(!query.point_sources.empty())
+      m_scheduler.template deliver_now<ConcurrencyTag>(*this);
     m_scheduler.template run<ConcurrencyTag>(*this, m_stats.windows_peak);
     for(Patch& p : m_patches)
     {
@@ -95,9 +110,25 @@ public:
       m_stats.pseudo_sources += p.stats.pseudo_sources;
       m_stats.vertices_popped += p.stats.vertices_popped;
     }
-    for(const FT& d : m_distance)
+    m_targets.finish(m_mesh, m_distance, m_origin, query.point_sources,
+                     nv + Index(query.vertex_sources.size()));
+    for(FT& d : m_distance)
+    {
+      if(d > query.max_distance)
+        d = infinity();
       if(d < infinity())
         ++m_stats.vertices_reached;
+    }
+  }
+
+  // per vertex: the pseudo-source of its path (a vertex, or the number of vertices + the number of
+  // a source in the query's order), when the query records them
+  const std::vector<Index>& origins() const { return m_origin; }
+  static Index no_origin() { return Index(-1); }
+  // the distances of the query's point targets, and the pseudo-sources of their paths
+  void point_target_distances(std::vector<FT>& distances, std::vector<Index>* origins) const
+  {
+    m_targets.combine(distances, origins);
   }
 
   const std::vector<FT>& distances() const { return m_distance; }
@@ -136,7 +167,23 @@ private:
     return queue.empty() ? infinity() : queue.top().first;
   }
 
-  bool has_work(Index k) const { return !m_patches[k].queue.empty() || !m_patches[k].fifo.empty(); }
+  bool has_lists_to_propagate(Index k) const { return !m_patches[k].fifo.empty(); }
+
+  // Early termination: the vertices nearer than the query's largest distance of interest are
+  // final once no vertex within a few mean edge lengths beyond it is left to pop (the band of
+  // twice a round's width absorbs what windows crossing the last faces still bring).
+  FT stop_limit() const
+  {
+    FT limit = m_query->max_distance;
+    if(!m_query->vertex_targets.empty() || !m_targets.empty())
+    {
+      FT targets = m_targets.empty() ? FT(0) : m_targets.largest();
+      for(Index v : m_query->vertex_targets)
+        targets = (std::max)(targets, m_distance[v]);
+      limit = (std::min)(limit, targets);
+    }
+    return limit < infinity() ? limit + FT(2) * m_partition.band() : limit;
+  }
 
   // lines 9-29 in one patch, for the vertices nearer than `limit`
   void run_round(Index k, FT limit)
@@ -171,7 +218,7 @@ private:
   }
 
   void receive(Index k, const typename Scheduler::Window_message& m) { add_window(m_patches[k], m.halfedge, m.window); }
-  void receive(Index k, const typename Scheduler::Relax_message& m) { relax(m_patches[k], m.vertex, m.distance, m.back); }
+  void receive(Index k, const typename Scheduler::Relax_message& m) { relax(m_patches[k], m.vertex, m.distance, m.back, m.origin); }
   void receive(Index k, const typename Scheduler::Face_message& m) { enter_face(m_patches[k], m.face); }
 
   // A window list can only be waiting outside R if none of its face's vertices was ever reached,
@@ -199,9 +246,9 @@ private:
   // Lines 23-24: a path of length `d` reaches `v`, arriving from the polar angle `back` at `v`
   // (the direction pointing back along the path). Paths that tie with the best one widen the
   // recorded range of arrival directions: the shadow of a saddle is the union of their shadows.
-  void relax(Patch& p, Index v, FT d, FT back)
+  void relax(Patch& p, Index v, FT d, FT back, Index origin)
   {
-    if(m_scheduler.template hand_off<typename Scheduler::Relax_message>(p.id, m_partition.owner(v), v, d, back))
+    if(m_scheduler.template hand_off<typename Scheduler::Relax_message>(p.id, m_partition.owner(v), v, d, back, origin))
       return;
     const FT dv = m_distance[v];
     Incoming& in = m_incoming[v];
@@ -209,6 +256,8 @@ private:
     {
       m_distance[v] = d;
       in.low = in.high = back;
+      if(!m_origin.empty())
+        m_origin[v] = origin;
       p.queue.push(Queue_entry(d, v));
     }
     else if(d <= dv + T::rounding_margin(dv) && !(in.low <= back && back <= in.high))
@@ -217,6 +266,8 @@ private:
       in.high = (std::max)(in.high, back);
       if(d < dv)
         m_distance[v] = d;
+      if(!m_origin.empty() && d < dv)
+        m_origin[v] = origin;
       p.queue.push(Queue_entry(m_distance[v], v)); // emit the wider shadow if already popped
     }
   }
@@ -290,11 +341,54 @@ private:
     const Index across = Mesh::next(h);
     const Index prev = Mesh::prev(h);
     relax(p, m_mesh.target(h), dv + m_mesh.length(h),
-          m_mesh.corner_start_angle(across) + m_mesh.corner_angle(across));
-    relax(p, m_mesh.source(prev), dv + m_mesh.length(prev), m_mesh.corner_start_angle(prev));
+          m_mesh.corner_start_angle(across) + m_mesh.corner_angle(across), v);
+    relax(p, m_mesh.source(prev), dv + m_mesh.length(prev), m_mesh.corner_start_angle(prev), v);
     const Index t = m_mesh.opposite(across);
     if(t != Mesh::no_halfedge)
-      add_window(p, t, window_across_corner(m_mesh, h, dv, m_bound_epsilon));
+      add_window(p, t, window_across_corner(m_mesh, h, dv, m_bound_epsilon, v));
+  }
+
+  // A source inside a face (or on an edge, then in both faces) reaches the face's corners
+  // straight and sends a full-edge window across each edge it is not on (lines 2-7).
+  void emit_from_surface_point(const Surface_point<FT>& s, Index origin)
+  {
+    Surface_point<FT> other{Index(-1), {FT(0), FT(0), FT(0)}};
+    for(int k = 0; k < 3; ++k)
+      if(s.barycentric[k] == FT(0))
+      {
+        const Index o = m_mesh.opposite(3 * s.face + (k + 1) % 3);
+        if(o == Mesh::no_halfedge)
+          continue;
+        other.face = Mesh::face(o);
+        other.barycentric[o % 3] = s.barycentric[(k + 2) % 3];
+        other.barycentric[(o + 1) % 3] = s.barycentric[(k + 1) % 3];
+      }
+    // the two faces of an edge point in the same order however the point was given
+    if(other.face != Index(-1) && other.face < s.face)
+      emit_from_point_in_face(other.face, other.barycentric, origin);
+    emit_from_point_in_face(s.face, s.barycentric, origin);
+    if(other.face != Index(-1) && other.face > s.face)
+      emit_from_point_in_face(other.face, other.barycentric, origin);
+  }
+
+  void emit_from_point_in_face(Index f, const std::array<FT, 3>& b, Index origin)
+  {
+    Patch& p = m_patches[m_partition.patch_of_face(f)];
+    ++p.stats.pseudo_sources;
+    for(int k = 0; k < 3; ++k)
+    {
+      // in the frame of halfedge e = 3f + k: its source at the origin, its target at (len, 0)
+      const Index e = 3 * f + k;
+      const Point c = m_mesh.apex(e);
+      const Point q{b[(k + 1) % 3] * m_mesh.length(e) + b[(k + 2) % 3] * c.x, b[(k + 2) % 3] * c.y};
+      const FT to_source = length(q);
+      using std::atan2;
+      relax(p, m_mesh.source(e), to_source, m_mesh.corner_start_angle(e) + atan2(q.y, q.x), origin);
+      const Index t = m_mesh.opposite(e);
+      if(b[(k + 2) % 3] != FT(0) && t != Mesh::no_halfedge) // not on this edge
+        add_window(p, t, window_from_point(m_mesh, e, q, FT(0), length(q - Point{m_mesh.length(e), FT(0)}),
+                                           to_source, m_bound_epsilon, origin));
+    }
   }
 
   // lines 14-15
@@ -369,6 +463,8 @@ private:
     p.buffer.resize(kept);
     if(!is_dgg())
       trim_overlapping_windows(p.buffer, p.starts);
+    if(m_targets.in_face(Mesh::face(h)))
+      m_targets.cross(m_mesh, h, p.buffer);
 
     // "one angle, two sides": the window that reaches c best, B, splits the face along its path
     // to c, and the other windows' children keep to their side of it (see sides_of_best_path)
@@ -400,7 +496,7 @@ private:
       const Point back = best->source - c;
       using std::atan2;
       relax(p, apex_vertex, best_distance,
-            m_mesh.corner_start_angle(Mesh::prev(h)) + atan2(cross(to_a, back), dot(to_a, back)));
+            m_mesh.corner_start_angle(Mesh::prev(h)) + atan2(cross(to_a, back), dot(to_a, back)), best->origin);
     }
 
     // lines 19-26: the children on the edges (c, a) and (b, c); a child whose ray grazes c takes
@@ -467,6 +563,9 @@ private:
   std::vector<char> m_scheduled;      // per halfedge: its window list is in its patch's FIFO
   std::vector<char> m_is_source;      // per vertex: one of the sources (they emit all around)
   std::deque<Patch> m_patches;        // a deque: a patch never moves
+  const Propagation_query<FT>* m_query = nullptr;
+  std::vector<Index> m_origin;        // per vertex: the pseudo-source of its path (only if the query asks)
+  Point_targets<FT> m_targets;        // the query's targets inside faces
   Propagation_statistics m_stats;
 };
 

@@ -1,0 +1,198 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_POINT_TARGETS_H
+#define CGAL_DGG_VTP_3_INTERNAL_POINT_TARGETS_H
+
+#include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
+#include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Window.h>
+#include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// The distances of points of faces, computed during a propagation: the shortest path to a point
+// of face f enters f through one of its edges, carried by a window crossing f, or comes from one
+// of f's corners (a pseudo-source there) or from a source in f. So the exact distance is the
+// smallest of what the windows crossing f give at the point, D(corner) + |corner point| and
+// |source point|; the windows are looked at as they cross, so nothing is kept. A point on an edge
+// belongs to both faces; each face keeps its own best value (a patch writes only its faces), and
+// the two are combined at the end.
+template <class FT>
+class Point_targets
+{
+  using Mesh = Unfolded_mesh<FT>;
+  using Index = typename Mesh::Index;
+  using Point = Vec2<FT>;
+
+public:
+  Point_targets() = default;
+
+  // `points` must not be at a vertex (such a target is the vertex)
+  Point_targets(const Mesh& mesh, const std::vector<Surface_point<FT>>& points)
+    : m_count(points.size())
+  {
+    if(points.empty())
+      return;
+    std::vector<std::pair<Index, Entry>> entries;
+    for(std::size_t t = 0; t < points.size(); ++t)
+    {
+      const Surface_point<FT>& q = points[t];
+      entries.emplace_back(q.face, Entry{Index(t), q.barycentric, infinity(), Index(-1)});
+      for(int k = 0; k < 3; ++k)
+        if(q.barycentric[k] == FT(0))
+        {
+          // on the edge opposite corner k, halfedge 3f + k + 1: the same point in the neighbour
+          const Index h = 3 * q.face + (k + 1) % 3;
+          const Index o = mesh.opposite(h);
+          if(o == Mesh::no_halfedge)
+            continue;
+          std::array<FT, 3> b{FT(0), FT(0), FT(0)};
+          b[o % 3] = q.barycentric[(k + 2) % 3];           // o starts where h ends
+          b[(o + 1) % 3] = q.barycentric[(k + 1) % 3];
+          entries.emplace_back(Mesh::face(o), Entry{Index(t), b, infinity(), Index(-1)});
+        }
+    }
+    std::stable_sort(entries.begin(), entries.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    m_in_face.assign(mesh.number_of_faces(), 0);
+    m_faces.reserve(entries.size());
+    m_entries.reserve(entries.size());
+    for(const auto& e : entries)
+    {
+      m_in_face[e.first] = 1;
+      m_faces.push_back(e.first);
+      m_entries.push_back(e.second);
+    }
+  }
+
+  bool empty() const { return m_count == 0; }
+  bool in_face(Index f) const { return !m_in_face.empty() && m_in_face[f] != 0; }
+
+  // the windows of the list of halfedge `h` cross its face: each gives its distance to the
+  // targets of the face inside its beam
+  void cross(const Mesh& mesh, Index h, const std::vector<Window<FT>>& windows)
+  {
+    const Index f = Mesh::face(h);
+    const int k = int(h % 3);
+    const Point c = mesh.apex(h);
+    const FT len = mesh.length(h);
+    for(auto it = std::lower_bound(m_faces.begin(), m_faces.end(), f); it != m_faces.end() && *it == f; ++it)
+    {
+      Entry& e = m_entries[it - m_faces.begin()];
+      const Point q{e.barycentric[(k + 1) % 3] * len + e.barycentric[(k + 2) % 3] * c.x,
+                    e.barycentric[(k + 2) % 3] * c.y};
+      for(const Window<FT>& w : windows)
+      {
+        // inside the beam: between the rays through b0 (on the left) and b1
+        const Point r = q - w.source;
+        if(cross_product(Point{w.b1 - w.source.x, -w.source.y}, r) < FT(0) ||
+           cross_product(r, Point{w.b0 - w.source.x, -w.source.y}) < FT(0))
+          continue;
+        const FT d = w.sigma + length(r);
+        if(d < e.best)
+        {
+          e.best = d;
+          e.origin = w.origin;
+        }
+      }
+    }
+  }
+
+  // the largest of the targets' distances found so far (+inf while one is unreached)
+  FT largest() const
+  {
+    std::vector<FT> best(m_count, infinity());
+    combine(best, nullptr);
+    FT largest(0);
+    for(const FT& d : best)
+      largest = (std::max)(largest, d);
+    return largest;
+  }
+
+  // The distances of the targets, after the propagation, with what the corners and the source
+  // points give; `origins` (if not null) receives the pseudo-source of each one's path.
+  void finish(const Mesh& mesh, const std::vector<FT>& vertex_distance, const std::vector<Index>& vertex_origin,
+              const std::vector<Surface_point<FT>>& sources, Index first_point_source_origin)
+  {
+    for(std::size_t i = 0; i < m_entries.size(); ++i)
+    {
+      Entry& e = m_entries[i];
+      const Index f = m_faces[i];
+      const Point corner[3] = {Point{FT(0), FT(0)}, Point{mesh.length(3 * f), FT(0)}, mesh.apex(3 * f)};
+      const Point q = position(e.barycentric, corner);
+      for(int k = 0; k < 3; ++k)
+      {
+        const Index v = mesh.source(3 * f + k);
+        const FT d = vertex_distance[v] + length(q - corner[k]);
+        if(d < e.best)
+        {
+          e.best = d;
+          e.origin = vertex_origin.empty() ? Index(-1) : v;
+        }
+      }
+      for(std::size_t s = 0; s < sources.size(); ++s)
+        if(sources[s].face == f)
+        {
+          const FT d = length(q - position(sources[s].barycentric, corner));
+          if(d < e.best)
+          {
+            e.best = d;
+            e.origin = first_point_source_origin + Index(s);
+          }
+        }
+    }
+  }
+
+  // per target: its distance, and the pseudo-source of its path
+  void combine(std::vector<FT>& best, std::vector<Index>* origins) const
+  {
+    best.assign(m_count, infinity());
+    if(origins)
+      origins->assign(m_count, Index(-1));
+    for(const Entry& e : m_entries)
+      if(e.best < best[e.target])
+      {
+        best[e.target] = e.best;
+        if(origins)
+          (*origins)[e.target] = e.origin;
+      }
+  }
+
+private:
+  static FT infinity() { return std::numeric_limits<FT>::infinity(); }
+  static FT cross_product(const Point& a, const Point& b) { return internal::cross(a, b); }
+  static Point position(const std::array<FT, 3>& b, const Point* corner)
+  {
+    return Point{b[0] * corner[0].x + b[1] * corner[1].x + b[2] * corner[2].x,
+                 b[0] * corner[0].y + b[1] * corner[1].y + b[2] * corner[2].y};
+  }
+
+  struct Entry
+  {
+    Index target;                   // its number among the targets
+    std::array<FT, 3> barycentric;  // in this face
+    FT best;                        // the shortest distance found through this face
+    Index origin;                   // the pseudo-source of that path
+  };
+  std::size_t m_count = 0;
+  std::vector<char> m_in_face;      // per face: has targets
+  std::vector<Index> m_faces;       // per entry, sorted: its face
+  std::vector<Entry> m_entries;
+};
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_POINT_TARGETS_H

@@ -1,0 +1,48 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_PROPAGATION_QUERY_H
+#define CGAL_DGG_VTP_3_INTERNAL_PROPAGATION_QUERY_H
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// A point of the surface in the solver's numbering: a face and the barycentric coordinates of its
+// three corners (corner k of face f is the source of halfedge 3 f + k, as in Unfolded_mesh).
+template <class FT>
+struct Surface_point
+{
+  std::uint32_t face;
+  std::array<FT, 3> barycentric;
+};
+
+// What one propagation is asked: where it starts, how far it needs to go, what it records.
+template <class FT>
+struct Propagation_query
+{
+  using Index = std::uint32_t;
+  // the sources, numbered in this order: first the vertices, then the surface points (a surface
+  // point at a vertex is given as that vertex)
+  std::vector<Index> vertex_sources;
+  std::vector<Surface_point<FT>> point_sources;
+  std::vector<Index> source_numbers;          // per vertex source, then per point source: its number in the user's range
+  FT max_distance = std::numeric_limits<FT>::infinity(); // stop there; farther vertices are unreached
+  // stop once these are final (none: the whole field)
+  std::vector<Index> vertex_targets;
+  std::vector<Surface_point<FT>> point_targets;
+  bool record_origins = false;                // the pseudo-source of each vertex (nearest sources, paths)
+};
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_PROPAGATION_QUERY_H

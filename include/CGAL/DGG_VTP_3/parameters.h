@@ -1,0 +1,68 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_PARAMETERS_H
+#define CGAL_DGG_VTP_3_PARAMETERS_H
+
+/// \file parameters.h
+/// The named parameters of this package that CGAL's list does not have. CGAL 5.5's list of named
+/// parameters is closed, so these are free functions that start a chain: CGAL's own parameters
+/// may follow them (`CGAL::DGG_VTP_3::parameters::max_distance(0.5).accuracy(1e-4)`), and one of
+/// them is added to an existing chain with its second argument
+/// (`parameters::targets(points, parameters::max_distance(0.5))`).
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+
+// CGAL's own named parameters are seen through these namespaces too
+namespace internal_np {
+
+using namespace CGAL::internal_np;
+
+struct max_distance_t {};
+struct targets_t {};
+struct target_distances_t {};
+struct nearest_source_map_t {};
+
+} // namespace internal_np
+
+namespace parameters {
+
+using namespace CGAL::parameters;
+
+#define CGAL_DGG_VTP_3_NAMED_PARAMETER(name)                                                          \
+  template <class T>                                                                                 \
+  CGAL::Named_function_parameters<T, internal_np::name##_t> name(const T& value)                     \
+  {                                                                                                  \
+    return CGAL::Named_function_parameters<T, internal_np::name##_t>(value);                         \
+  }                                                                                                  \
+  template <class T, class U, class Tag, class Base>                                                 \
+  CGAL::Named_function_parameters<T, internal_np::name##_t, CGAL::Named_function_parameters<U, Tag, Base>> \
+  name(const T& value, const CGAL::Named_function_parameters<U, Tag, Base>& np)                      \
+  {                                                                                                  \
+    return CGAL::Named_function_parameters<T, internal_np::name##_t,                                 \
+                                           CGAL::Named_function_parameters<U, Tag, Base>>(value, np); \
+  }
+
+/// Stops the propagation at this distance: farther vertices get `+infinity`.
+CGAL_DGG_VTP_3_NAMED_PARAMETER(max_distance)
+/// Vertices or surface points (`CGAL::Polygon_mesh_processing::Face_location`): the propagation
+/// stops as soon as their distances are final.
+CGAL_DGG_VTP_3_NAMED_PARAMETER(targets)
+/// An output iterator that receives the distance of each of the `targets`, in their order.
+CGAL_DGG_VTP_3_NAMED_PARAMETER(target_distances)
+/// A writable vertex property map that receives, per vertex, the number of its nearest source in
+/// the range of sources (`std::size_t(-1)` where unreachable).
+CGAL_DGG_VTP_3_NAMED_PARAMETER(nearest_source_map)
+
+#undef CGAL_DGG_VTP_3_NAMED_PARAMETER
+
+} // namespace parameters
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_PARAMETERS_H
