@@ -7,6 +7,7 @@
 #define CGAL_DGG_VTP_3_GEODESIC_DISTANCE_SOLVER_H
 
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
+#include <CGAL/DGG_VTP_3/Shortest_path_tree.h>
 #include <CGAL/DGG_VTP_3/parameters.h>
 #include <CGAL/DGG_VTP_3/internal/Effective_concurrency_tag.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
@@ -155,6 +156,7 @@ public:
     m_internal_face.resize(order.size());
     for(std::size_t f = 0; f < order.size(); ++f)
       m_internal_face[order[f]] = Index(f);
+    m_user_face = order;
   }
 
   /*!
@@ -291,10 +293,49 @@ public:
     return statistics;
   }
 
+  /*!
+   * computes the distances from `sources` as `compute_distances_to_nearest_source()` does, and
+   * keeps what tracing the shortest paths back needs (per vertex about 32 bytes more than the
+   * distance): the paths to every vertex and to the point `targets` (named parameter) can then be
+   * traced. With DGG-VTP, a path goes through the pseudo-source vertices that produced the
+   * distance, and its length is the distance reported.
+   *
+   * \tparam ConcurrencyTag, SourceRange as for `compute_distances_to_nearest_source()`
+   * \param np `accuracy`, `DGG_VTP_3::parameters::max_distance`, `DGG_VTP_3::parameters::targets`
+   *        (the paths to points that will be asked for, and early termination)
+   */
+  template <class ConcurrencyTag = Sequential_tag, class SourceRange,
+            class NamedParameters = parameters::Default_named_parameters>
+  Shortest_path_tree<Geodesic_distance_solver>
+  compute_shortest_path_tree(const SourceRange& sources, const NamedParameters& np = parameters::default_values()) const
+  {
+    const Computation_FT accuracy = checked_accuracy(np);
+    internal::Propagation_query<Computation_FT> query;
+    builder().add_sources(sources, query);
+    if(query.vertex_sources.empty() && query.point_sources.empty())
+      throw std::invalid_argument("no source given");
+    add_query_options(np, query);
+    query.record_origins = query.record_arrivals = true;
+    internal::Window_propagation<Computation_FT> propagation(m_mesh, m_partition, accuracy);
+    propagation.template run<Effective_tag<ConcurrencyTag>>(query);
+    return Shortest_path_tree<Geodesic_distance_solver>(*this, propagation, query);
+  }
+
   std::size_t number_of_vertices() const { return m_vertices.size(); }
 
 private:
+  friend class Shortest_path_tree<Geodesic_distance_solver>;
+
+
   using Index = typename Mesh::Index;
+
+  Index checked_vertex(vertex_descriptor v) const
+  {
+    const std::size_t i = static_cast<std::size_t>(get(m_vim, v));
+    if(i >= m_vertices.size() || m_vertices[i] != v)
+      throw std::invalid_argument("not a vertex of the mesh");
+    return Index(i);
+  }
 
   template <class NamedParameters>
   static Computation_FT checked_accuracy(const NamedParameters& np)
@@ -356,8 +397,7 @@ private:
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::target_distances_t>::value)
     {
       auto out = parameters::get_parameter(np, internal_np::target_distances_t());
-      std::vector<Computation_FT> at_points;
-      propagation.point_target_distances(at_points, nullptr);
+      const std::vector<Computation_FT> at_points = propagation.point_targets().distances();
       for(const auto& t : targets)
       {
         const Computation_FT dt = t.first ? d[t.second] : at_points[t.second];
@@ -408,6 +448,7 @@ private:
   std::vector<vertex_descriptor> m_vertices; // internal index -> user's vertex
   std::vector<face_descriptor> m_faces;      // user's face index -> user's face
   std::vector<Index> m_internal_face;        // user's face index -> internal face
+  std::vector<Index> m_user_face;            // internal face -> user's face index
 };
 
 } // namespace DGG_VTP_3

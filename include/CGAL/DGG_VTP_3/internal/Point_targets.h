@@ -12,6 +12,7 @@
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <utility>
@@ -48,7 +49,7 @@ public:
     for(std::size_t t = 0; t < points.size(); ++t)
     {
       const Surface_point<FT>& q = points[t];
-      entries.emplace_back(q.face, Entry{Index(t), q.barycentric, infinity(), Index(-1)});
+      entries.emplace_back(q.face, Entry{Index(t), q.barycentric, infinity(), Index(-1), Index(-1), Point{FT(0), FT(0)}});
       for(int k = 0; k < 3; ++k)
         if(q.barycentric[k] == FT(0))
         {
@@ -60,7 +61,7 @@ public:
           std::array<FT, 3> b{FT(0), FT(0), FT(0)};
           b[o % 3] = q.barycentric[(k + 2) % 3];           // o starts where h ends
           b[(o + 1) % 3] = q.barycentric[(k + 1) % 3];
-          entries.emplace_back(Mesh::face(o), Entry{Index(t), b, infinity(), Index(-1)});
+          entries.emplace_back(Mesh::face(o), Entry{Index(t), b, infinity(), Index(-1), Index(-1), Point{FT(0), FT(0)}});
         }
     }
     std::stable_sort(entries.begin(), entries.end(),
@@ -101,10 +102,7 @@ public:
           continue;
         const FT d = w.sigma + length(r);
         if(d < e.best)
-        {
-          e.best = d;
-          e.origin = w.origin;
-        }
+          e.set(d, w.origin, h, w.source - q);
       }
     }
   }
@@ -112,19 +110,18 @@ public:
   // the largest of the targets' distances found so far (+inf while one is unreached)
   FT largest() const
   {
-    std::vector<FT> best(m_count, infinity());
-    combine(best, nullptr);
     FT largest(0);
-    for(const FT& d : best)
+    for(const FT& d : distances())
       largest = (std::max)(largest, d);
     return largest;
   }
 
   // The distances of the targets, after the propagation, with what the corners and the source
-  // points give; `origins` (if not null) receives the pseudo-source of each one's path.
-  void finish(const Mesh& mesh, const std::vector<FT>& vertex_distance, const std::vector<Index>& vertex_origin,
-              const std::vector<Surface_point<FT>>& sources, Index first_point_source_origin)
+  // points give.
+  void finish(const Mesh& mesh, const std::vector<FT>& vertex_distance, const Propagation_query<FT>& query)
   {
+    const Index nv = Index(vertex_distance.size());
+    const std::vector<Surface_point<FT>>& sources = query.point_sources;
     for(std::size_t i = 0; i < m_entries.size(); ++i)
     {
       Entry& e = m_entries[i];
@@ -136,37 +133,49 @@ public:
         const Index v = mesh.source(3 * f + k);
         const FT d = vertex_distance[v] + length(q - corner[k]);
         if(d < e.best)
-        {
-          e.best = d;
-          e.origin = vertex_origin.empty() ? Index(-1) : v;
-        }
+          e.set(d, v, 3 * f, corner[k] - q);
       }
       for(std::size_t s = 0; s < sources.size(); ++s)
         if(sources[s].face == f)
         {
-          const FT d = length(q - position(sources[s].barycentric, corner));
+          const Point source = position(sources[s].barycentric, corner);
+          const FT d = length(q - source);
           if(d < e.best)
-          {
-            e.best = d;
-            e.origin = first_point_source_origin + Index(s);
-          }
+            e.set(d, nv + query.source_numbers[query.vertex_sources.size() + s], 3 * f, source - q);
         }
     }
   }
 
-  // per target: its distance, and the pseudo-source of its path
-  void combine(std::vector<FT>& best, std::vector<Index>* origins) const
+  // how the shortest path found reaches a target: its length, its pseudo-source (a vertex, or the
+  // number of vertices + the number of a source), and the direction it arrives from, in the frame
+  // of a halfedge of the target's face
+  struct Arrival
   {
-    best.assign(m_count, infinity());
-    if(origins)
-      origins->assign(m_count, Index(-1));
+    FT distance;
+    Index origin;
+    Index frame;
+    Point direction;
+    std::array<FT, 3> barycentric; // the target in the frame's face
+  };
+
+  // per target: how its shortest path arrives
+  void combine(std::vector<Arrival>& arrivals) const
+  {
+    arrivals.assign(m_count, Arrival{infinity(), Index(-1), Index(-1), Point{FT(0), FT(0)}, {FT(0), FT(0), FT(0)}});
     for(const Entry& e : m_entries)
-      if(e.best < best[e.target])
-      {
-        best[e.target] = e.best;
-        if(origins)
-          (*origins)[e.target] = e.origin;
-      }
+      if(e.best < arrivals[e.target].distance)
+        arrivals[e.target] = Arrival{e.best, e.origin, e.frame, e.direction, e.barycentric};
+  }
+
+  // per target: its distance
+  std::vector<FT> distances() const
+  {
+    std::vector<Arrival> arrivals;
+    combine(arrivals);
+    std::vector<FT> d;
+    for(const Arrival& a : arrivals)
+      d.push_back(a.distance);
+    return d;
   }
 
 private:
@@ -184,6 +193,15 @@ private:
     std::array<FT, 3> barycentric;  // in this face
     FT best;                        // the shortest distance found through this face
     Index origin;                   // the pseudo-source of that path
+    Index frame;                    // a halfedge of the face, the frame of `direction`
+    Point direction;                // where that path arrives from
+    void set(FT d, Index o, Index h, const Point& towards)
+    {
+      best = d;
+      origin = o;
+      frame = h;
+      direction = towards;
+    }
   };
   std::size_t m_count = 0;
   std::vector<char> m_in_face;      // per face: has targets

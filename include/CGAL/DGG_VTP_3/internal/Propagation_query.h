@@ -39,6 +39,7 @@ struct Propagation_query
   std::vector<Index> vertex_targets;
   std::vector<Surface_point<FT>> point_targets;
   bool record_origins = false;                // the pseudo-source of each vertex (nearest sources, paths)
+  bool record_arrivals = false;               // the direction each vertex's path arrives from (paths)
 };
 
 } // namespace internal

@@ -56,7 +56,8 @@ public:
   {
     Index vertex;
     FT distance;
-    FT back;
+    Index corner;
+    Vec2<FT> direction;
     Index origin;
   };
   struct Face_message

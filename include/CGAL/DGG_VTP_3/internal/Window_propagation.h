@@ -88,6 +88,8 @@ public:
     const Index nv = Index(m_distance.size());
     if(query.record_origins)
       m_origin.assign(nv, no_origin());
+    if(query.record_arrivals)
+      m_arrival.assign(nv, Arrival{Mesh::no_halfedge, Point{FT(0), FT(0)}});
     for(std::size_t k = 0; k < query.vertex_sources.size(); ++k)
     {
       const Index s = query.vertex_sources[k];
@@ -110,8 +112,7 @@ public:
       m_stats.pseudo_sources += p.stats.pseudo_sources;
       m_stats.vertices_popped += p.stats.vertices_popped;
     }
-    m_targets.finish(m_mesh, m_distance, m_origin, query.point_sources,
-                     nv + Index(query.vertex_sources.size()));
+    m_targets.finish(m_mesh, m_distance, query);
     for(FT& d : m_distance)
     {
       if(d > query.max_distance)
@@ -124,12 +125,17 @@ public:
   // per vertex: the pseudo-source of its path (a vertex, or the number of vertices + the number of
   // a source in the query's order), when the query records them
   const std::vector<Index>& origins() const { return m_origin; }
-  static Index no_origin() { return Index(-1); }
-  // the distances of the query's point targets, and the pseudo-sources of their paths
-  void point_target_distances(std::vector<FT>& distances, std::vector<Index>* origins) const
+  // per vertex: the corner and the direction (in that corner's frame) its path arrives from,
+  // when the query records them
+  struct Arrival
   {
-    m_targets.combine(distances, origins);
-  }
+    Index corner;
+    Point direction;
+  };
+  const std::vector<Arrival>& arrivals() const { return m_arrival; }
+  static Index no_origin() { return Index(-1); }
+  // the query's point targets: how their shortest paths arrive
+  const Point_targets<FT>& point_targets() const { return m_targets; }
 
   const std::vector<FT>& distances() const { return m_distance; }
   const Propagation_statistics& statistics() const { return m_stats; }
@@ -218,7 +224,10 @@ private:
   }
 
   void receive(Index k, const typename Scheduler::Window_message& m) { add_window(m_patches[k], m.halfedge, m.window); }
-  void receive(Index k, const typename Scheduler::Relax_message& m) { relax(m_patches[k], m.vertex, m.distance, m.back, m.origin); }
+  void receive(Index k, const typename Scheduler::Relax_message& m)
+  {
+    relax(m_patches[k], m.vertex, m.distance, m.corner, m.direction, m.origin);
+  }
   void receive(Index k, const typename Scheduler::Face_message& m) { enter_face(m_patches[k], m.face); }
 
   // A window list can only be waiting outside R if none of its face's vertices was ever reached,
@@ -243,13 +252,17 @@ private:
   // ---------------------------------------------------------------------------------------------
   // vertices
 
-  // Lines 23-24: a path of length `d` reaches `v`, arriving from the polar angle `back` at `v`
-  // (the direction pointing back along the path). Paths that tie with the best one widen the
-  // recorded range of arrival directions: the shadow of a saddle is the union of their shadows.
-  void relax(Patch& p, Index v, FT d, FT back, Index origin)
+  // Lines 23-24: a path of length `d` reaches `v`, arriving from `direction` (pointing back along
+  // the path, in the frame of `corner`, one of v's corners: polar angle `back` at `v`). Paths that
+  // tie with the best one widen the recorded range of arrival directions: the shadow of a saddle
+  // is the union of their shadows.
+  void relax(Patch& p, Index v, FT d, Index corner, const Point& direction, Index origin)
   {
-    if(m_scheduler.template hand_off<typename Scheduler::Relax_message>(p.id, m_partition.owner(v), v, d, back, origin))
+    if(m_scheduler.template hand_off<typename Scheduler::Relax_message>(p.id, m_partition.owner(v), v, d, corner,
+                                                                         direction, origin))
       return;
+    using std::atan2;
+    const FT back = m_mesh.corner_start_angle(corner) + atan2(direction.y, direction.x);
     const FT dv = m_distance[v];
     Incoming& in = m_incoming[v];
     if(d < dv - T::rounding_margin(dv) || dv == infinity())
@@ -258,6 +271,8 @@ private:
       in.low = in.high = back;
       if(!m_origin.empty())
         m_origin[v] = origin;
+      if(!m_arrival.empty())
+        m_arrival[v] = Arrival{corner, direction};
       p.queue.push(Queue_entry(d, v));
     }
     else if(d <= dv + T::rounding_margin(dv) && !(in.low <= back && back <= in.high))
@@ -268,6 +283,8 @@ private:
         m_distance[v] = d;
       if(!m_origin.empty() && d < dv)
         m_origin[v] = origin;
+      if(!m_arrival.empty() && d < dv)
+        m_arrival[v] = Arrival{corner, direction};
       p.queue.push(Queue_entry(m_distance[v], v)); // emit the wider shadow if already popped
     }
   }
@@ -340,9 +357,9 @@ private:
     const FT dv = m_distance[v];
     const Index across = Mesh::next(h);
     const Index prev = Mesh::prev(h);
-    relax(p, m_mesh.target(h), dv + m_mesh.length(h),
-          m_mesh.corner_start_angle(across) + m_mesh.corner_angle(across), v);
-    relax(p, m_mesh.source(prev), dv + m_mesh.length(prev), m_mesh.corner_start_angle(prev), v);
+    // from target(h) back along its corner's last edge, from source(prev) back along prev
+    relax(p, m_mesh.target(h), dv + m_mesh.length(h), across, m_mesh.apex(across), v);
+    relax(p, m_mesh.source(prev), dv + m_mesh.length(prev), prev, Point{FT(1), FT(0)}, v);
     const Index t = m_mesh.opposite(across);
     if(t != Mesh::no_halfedge)
       add_window(p, t, window_across_corner(m_mesh, h, dv, m_bound_epsilon, v));
@@ -382,8 +399,7 @@ private:
       const Point c = m_mesh.apex(e);
       const Point q{b[(k + 1) % 3] * m_mesh.length(e) + b[(k + 2) % 3] * c.x, b[(k + 2) % 3] * c.y};
       const FT to_source = length(q);
-      using std::atan2;
-      relax(p, m_mesh.source(e), to_source, m_mesh.corner_start_angle(e) + atan2(q.y, q.x), origin);
+      relax(p, m_mesh.source(e), to_source, e, q, origin);
       const Index t = m_mesh.opposite(e);
       if(b[(k + 2) % 3] != FT(0) && t != Mesh::no_halfedge) // not on this edge
         add_window(p, t, window_from_point(m_mesh, e, q, FT(0), length(q - Point{m_mesh.length(e), FT(0)}),
@@ -491,12 +507,10 @@ private:
     }
     if(best != nullptr) // lines 21-24 for the apex
     {
-      // arrival direction at c, measured in c's corner, which starts along c -> a
+      // arrival direction at c, in the frame of c's corner prev(h), which starts along c -> a
       const Point to_a = Point{FT(0), FT(0)} - c;
       const Point back = best->source - c;
-      using std::atan2;
-      relax(p, apex_vertex, best_distance,
-            m_mesh.corner_start_angle(Mesh::prev(h)) + atan2(cross(to_a, back), dot(to_a, back)), best->origin);
+      relax(p, apex_vertex, best_distance, Mesh::prev(h), Point{dot(to_a, back), cross(to_a, back)}, best->origin);
     }
 
     // lines 19-26: the children on the edges (c, a) and (b, c); a child whose ray grazes c takes
@@ -565,6 +579,7 @@ private:
   std::deque<Patch> m_patches;        // a deque: a patch never moves
   const Propagation_query<FT>* m_query = nullptr;
   std::vector<Index> m_origin;        // per vertex: the pseudo-source of its path (only if the query asks)
+  std::vector<Arrival> m_arrival;     // per vertex: where its path arrives from (only if the query asks)
   Point_targets<FT> m_targets;        // the query's targets inside faces
   Propagation_statistics m_stats;
 };

@@ -1,0 +1,236 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_SHORTEST_PATH_TREE_H
+#define CGAL_DGG_VTP_3_SHORTEST_PATH_TREE_H
+
+#include <CGAL/DGG_VTP_3/internal/Path_tracer.h>
+#include <CGAL/DGG_VTP_3/internal/Point_targets.h>
+#include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
+#include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
+
+#include <CGAL/Polygon_mesh_processing/locate.h>
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+
+/*!
+ * \ingroup PkgDGGVTP3Ref
+ *
+ * The result of `Geodesic_distance_solver::compute_shortest_path_tree()`: the distances of the
+ * vertices (and of the query's targets) and what tracing their shortest paths back to the
+ * nearest source needs, per vertex the pseudo-source of its path (a source, a saddle or border
+ * vertex in the exact mode, any vertex with DGG-VTP) and the direction the path arrives from.
+ * A path is traced in time proportional to the number of faces it crosses; it is made of
+ * straight legs (in the unfolding of the faces they cross) from pseudo-source to pseudo-source,
+ * and its length is the distance reported for its target.
+ *
+ * It refers to the solver that computed it, which must outlive it; the mesh need not.
+ */
+template <class Solver>
+class Shortest_path_tree
+{
+  using Computation_FT = typename Solver::Computation_FT;
+  using Index = typename Solver::Index;
+  using Tracer = internal::Path_tracer<Computation_FT>;
+  using Internal_point = internal::Path_point_internal<Computation_FT>;
+
+public:
+  using FT = typename Solver::FT;
+  using vertex_descriptor = typename Solver::vertex_descriptor;
+  using face_descriptor = typename Solver::face_descriptor;
+  using Face_location = typename Solver::Face_location;
+
+  /// a point of a path
+  struct Path_point
+  {
+    /// where the point is: at a vertex, on an edge, inside a face
+    enum Simplex { VERTEX, EDGE, FACE };
+    Simplex simplex;
+    /// the point in a face: for all points but the first, the face the path crosses from the
+    /// previous point to this one (so that the faces it crosses are those of its points); an edge
+    /// point has one zero coordinate, a vertex two
+    Face_location location;
+    /// the vertex, for a `VERTEX`
+    vertex_descriptor vertex;
+  };
+
+  /// the distance of `v` (`+infinity` if unreachable)
+  FT distance(vertex_descriptor v) const { return FT(m_distance[m_solver->checked_vertex(v)]); }
+  /// the distance of the `k`-th target of the query
+  FT target_distance(std::size_t k) const { return FT(checked_target(k).distance); }
+
+  /// the number of the nearest source of `v` in the query's order (`std::size_t(-1)` if unreachable)
+  std::size_t nearest_source(vertex_descriptor v) const
+  {
+    Index u = m_solver->checked_vertex(v);
+    for(std::size_t steps = 0; steps <= m_origin.size() && u < m_origin.size(); ++steps)
+      u = m_origin[u];
+    return u == no_origin() || u < m_origin.size() ? std::size_t(-1) : std::size_t(u - m_origin.size());
+  }
+
+  /// writes the shortest path from `target` to its nearest source into `out`, as `Path_point`s,
+  /// from the target to the source; nothing if it is unreachable
+  template <class OutputIterator>
+  OutputIterator shortest_path(vertex_descriptor target, OutputIterator out) const
+  {
+    std::vector<Internal_point> path;
+    const Index v = m_solver->checked_vertex(target);
+    if(m_origin[v] != no_origin() && m_distance[v] < std::numeric_limits<Computation_FT>::infinity())
+    {
+      path.push_back(Tracer(m_solver->m_mesh).vertex_point(v, first_face(v)));
+      trace_from(v, path);
+    }
+    return to_user(path, out);
+  }
+
+  /// the same for the `k`-th target of the query
+  template <class OutputIterator>
+  OutputIterator shortest_path_to_target(std::size_t k, OutputIterator out) const
+  {
+    const auto& a = checked_target(k);
+    std::vector<Internal_point> path;
+    if(a.origin != no_origin() && a.distance < std::numeric_limits<Computation_FT>::infinity())
+    {
+      const Tracer tracer(m_solver->m_mesh);
+      const Index h = a.frame;
+      const int c = int(h % 3);
+      const auto apex = m_solver->m_mesh.apex(h);
+      const internal::Vec2<Computation_FT> q{a.barycentric[(c + 1) % 3] * m_solver->m_mesh.length(h) +
+                                               a.barycentric[(c + 2) % 3] * apex.x,
+                                             a.barycentric[(c + 2) % 3] * apex.y};
+      Internal_point start{Internal_point::FACE, h / 3, a.barycentric, Index(-1)};
+      int zeros = 0;
+      for(const auto& b : a.barycentric)
+        zeros += b == Computation_FT(0);
+      start.kind = zeros == 0 ? Internal_point::FACE : Internal_point::EDGE;
+      path.push_back(start);
+      const Leg leg = leg_to(a.origin, a.distance);
+      tracer.walk_from_point(h, q, a.direction, leg.length, leg.vertex, leg.end, path);
+      if(leg.vertex != Tracer::no_vertex() && !leg.is_source)
+        trace_from(leg.vertex, path);
+    }
+    return to_user(path, out);
+  }
+
+  /// the 3D points of a path given as `Path_point`s, in the same order (the mesh given to the solver)
+  template <class TriangleMesh, class PathPointRange, class OutputIterator>
+  static OutputIterator points(const TriangleMesh& tm, const PathPointRange& path, OutputIterator out)
+  {
+    for(const Path_point& p : path)
+      *out++ = CGAL::Polygon_mesh_processing::construct_point(p.location, tm);
+    return out;
+  }
+
+private:
+  friend Solver;
+  using Arrival = typename internal::Window_propagation<Computation_FT>::Arrival;
+  using Target = typename internal::Point_targets<Computation_FT>::Arrival;
+
+  static Index no_origin() { return internal::Window_propagation<Computation_FT>::no_origin(); }
+
+  Shortest_path_tree(const Solver& solver, internal::Window_propagation<Computation_FT>& propagation,
+                     const internal::Propagation_query<Computation_FT>& query)
+    : m_solver(&solver)
+    , m_distance(propagation.distances())
+    , m_origin(propagation.origins())
+    , m_arrival(propagation.arrivals())
+    , m_query(query)
+  {
+    propagation.point_targets().combine(m_targets);
+  }
+
+  const Target& checked_target(std::size_t k) const
+  {
+    if(k >= m_targets.size())
+      throw std::invalid_argument("no such target in the query");
+    return m_targets[k];
+  }
+
+  Index first_face(Index v) const { return *m_solver->m_mesh.corners_begin(v) / 3; }
+
+  // where a leg ending at `origin` (from a point at distance `from`) ends, and how long it is
+  struct Leg
+  {
+    Computation_FT length;
+    Index vertex;        // the vertex it ends at, or no_vertex()
+    Internal_point end;  // the source point it ends at, if not a vertex
+    bool is_source;      // it ends at a source: the path is complete
+  };
+  Leg leg_to(Index origin, Computation_FT from) const
+  {
+    const Index nv = Index(m_distance.size());
+    if(origin < nv)
+      return Leg{from - m_distance[origin], origin, Internal_point{}, false};
+    const std::size_t number = origin - nv;
+    for(std::size_t k = 0; k < m_query.vertex_sources.size(); ++k)
+      if(m_query.source_numbers[k] == number)
+        return Leg{from, m_query.vertex_sources[k], Internal_point{}, true};
+    for(std::size_t k = 0; k < m_query.point_sources.size(); ++k)
+      if(m_query.source_numbers[m_query.vertex_sources.size() + k] == number)
+      {
+        const auto& s = m_query.point_sources[k];
+        int zeros = 0;
+        for(const auto& b : s.barycentric)
+          zeros += b == Computation_FT(0);
+        return Leg{from, Tracer::no_vertex(),
+                   Internal_point{zeros == 0 ? Internal_point::FACE : Internal_point::EDGE, s.face, s.barycentric, Index(-1)},
+                   true};
+      }
+    return Leg{from, Tracer::no_vertex(), Internal_point{}, true};
+  }
+
+  // the legs from vertex `v` back to a source
+  void trace_from(Index v, std::vector<Internal_point>& path) const
+  {
+    const Tracer tracer(m_solver->m_mesh);
+    for(std::size_t steps = 0; steps <= m_distance.size(); ++steps)
+    {
+      const Index o = m_origin[v];
+      if(o == no_origin() || (o >= m_distance.size() && leg_to(o, m_distance[v]).vertex == v))
+        return; // v is the source
+      const Leg leg = leg_to(o, m_distance[v]);
+      tracer.walk_from_vertex(m_arrival[v].corner, m_arrival[v].direction, leg.length, leg.vertex, leg.end, path);
+      if(leg.is_source || leg.vertex == Tracer::no_vertex())
+        return;
+      v = leg.vertex;
+    }
+  }
+
+  template <class OutputIterator>
+  OutputIterator to_user(const std::vector<Internal_point>& path, OutputIterator out) const
+  {
+    for(const Internal_point& p : path)
+    {
+      Path_point q;
+      q.simplex = p.kind == Internal_point::VERTEX ? Path_point::VERTEX
+                : p.kind == Internal_point::EDGE ? Path_point::EDGE : Path_point::FACE;
+      q.location.first = m_solver->m_faces[m_solver->m_user_face[p.face]];
+      for(int k = 0; k < 3; ++k)
+        q.location.second[k] = FT(p.barycentric[k]);
+      q.vertex = p.kind == Internal_point::VERTEX ? m_solver->m_vertices[p.vertex] : vertex_descriptor();
+      *out++ = q;
+    }
+    return out;
+  }
+
+  const Solver* m_solver;
+  std::vector<Computation_FT> m_distance; // per vertex
+  std::vector<Index> m_origin;            // per vertex: the pseudo-source of its path
+  std::vector<Arrival> m_arrival;         // per vertex: the corner and direction its path arrives from
+  std::vector<Target> m_targets;          // per target of the query: how its path arrives
+  internal::Propagation_query<Computation_FT> m_query; // the sources
+};
+
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_SHORTEST_PATH_TREE_H

@@ -1,0 +1,228 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_PATH_TRACER_H
+#define CGAL_DGG_VTP_3_INTERNAL_PATH_TRACER_H
+
+#include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
+
+#include <CGAL/number_type_config.h>
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// A point of a path: at a vertex, on an edge or inside a face, given in the face the path
+// crosses next (barycentric coordinates of its corners, as Unfolded_mesh numbers them: zeros
+// for the corners whose opposite edge or vertex the point is not on).
+template <class FT>
+struct Path_point_internal
+{
+  enum Kind { VERTEX, EDGE, FACE };
+  Kind kind;
+  std::uint32_t face;
+  std::array<FT, 3> barycentric;
+  std::uint32_t vertex; // for a VERTEX
+};
+
+// Walks straight lines on the surface: a leg of a shortest path goes straight from a vertex (or a
+// point of a face) in a given direction across faces, unfolding each onto the last, for a given
+// length, and ends at the pseudo-source of the leg. Each edge crossed gives a path point.
+template <class FT>
+class Path_tracer
+{
+  using Mesh = Unfolded_mesh<FT>;
+  using Index = typename Mesh::Index;
+  using Point = Vec2<FT>;
+  using Path_point = Path_point_internal<FT>;
+
+public:
+  explicit Path_tracer(const Mesh& mesh) : m_mesh(mesh) {}
+
+  // The walk from the source of `corner` along `direction` (in the frame of `corner`), or from the
+  // point `p` of the face of `h` (in the frame of `h`), for `length`; it ends at `end_vertex` or,
+  // if that is `no_vertex()`, at `end_point`. Appends the edges crossed and the end.
+  void walk_from_vertex(Index corner, const Point& direction, FT length, Index end_vertex, const Path_point& end_point,
+                        std::vector<Path_point>& out) const
+  {
+    walk(corner, Point{FT(0), FT(0)}, direction, length, true, end_vertex, end_point, out);
+  }
+  void walk_from_point(Index h, const Point& p, const Point& direction, FT length, Index end_vertex,
+                       const Path_point& end_point, std::vector<Path_point>& out) const
+  {
+    walk(h, p, direction, length, false, end_vertex, end_point, out);
+  }
+  static Index no_vertex() { return Index(-1); }
+
+  // vertex `v` as a path point of face `f` if it is one of its corners, else of one of its own faces
+  Path_point vertex_point(Index v, Index f) const
+  {
+    for(int k = 0; k < 3; ++k)
+      if(m_mesh.source(3 * f + k) == v)
+        return corner_point(f, k);
+    const Index c = *m_mesh.corners_begin(v);
+    return corner_point(Mesh::face(c), int(c % 3));
+  }
+
+  // a point of the face of `h` given in the frame of `h`, as a path point
+  Path_point face_point(Index h, const Point& p) const
+  {
+    const Index f = Mesh::face(h);
+    const int k = int(h % 3);
+    const Point c = m_mesh.apex(h);
+    const FT len = m_mesh.length(h);
+    // barycentric coordinates in the frame: p = b1 (len, 0) + b2 c
+    const FT b2 = p.y / c.y;
+    const FT b1 = (p.x - b2 * c.x) / len;
+    Path_point q{Path_point::FACE, f, {FT(0), FT(0), FT(0)}, Index(-1)};
+    q.barycentric[(k + 1) % 3] = b1;
+    q.barycentric[(k + 2) % 3] = b2;
+    q.barycentric[k] = FT(1) - b1 - b2;
+    return q;
+  }
+
+private:
+  // the frame of `to` (a halfedge of the same face as `from`) from the frame of `from`
+  void change_frame(Index from, Index to, Point& p, Point& d) const
+  {
+    while(from != to)
+    {
+      // into the frame of next(from): its origin is (len, 0), its axis along (apex - (len, 0))
+      const FT len = m_mesh.length(from);
+      const Point c = m_mesh.apex(from);
+      const Point axis = c - Point{len, FT(0)};
+      const FT n = m_mesh.length(Mesh::next(from));
+      const Point q = p - Point{len, FT(0)};
+      p = Point{dot(q, axis) / n, cross(axis, q) / n};
+      d = Point{dot(d, axis) / n, cross(axis, d) / n};
+      from = Mesh::next(from);
+    }
+  }
+
+  Path_point corner_point(Index f, int k) const
+  {
+    Path_point q{Path_point::VERTEX, f, {FT(0), FT(0), FT(0)}, m_mesh.source(3 * f + Index(k))};
+    q.barycentric[k] = FT(1);
+    return q;
+  }
+
+  void walk(Index h, Point p, Point d, FT length, bool from_corner, Index end_vertex, const Path_point& end_point,
+            std::vector<Path_point>& out) const
+  {
+    using std::atan2;
+    using std::cos;
+    using std::sin;
+    d = Point{d.x / length_of(d), d.y / length_of(d)};
+    Index entry = from_corner ? h : Mesh::no_halfedge; // from a corner: leave through the opposite edge
+    const FT tolerance = FT(1024) * std::numeric_limits<FT>::epsilon();
+    for(std::size_t steps = 0; steps <= 3 * m_mesh.number_of_faces(); ++steps)
+    {
+      // the edge of the face of h the ray leaves through: the nearest crossing ahead
+      FT best_t = std::numeric_limits<FT>::infinity();
+      Index exit = Mesh::no_halfedge;
+      FT exit_u(0);
+      const Point corner[3] = {Point{FT(0), FT(0)}, Point{m_mesh.length(h), FT(0)}, m_mesh.apex(h)};
+      for(int i = 0; i < 3; ++i)
+      {
+        const Index e = Mesh::face(h) * 3 + Index((h + i) % 3);
+        if(e == entry || (from_corner && e == Mesh::prev(entry)))
+          continue;
+        const Point a = corner[i], b = corner[(i + 1) % 3];
+        // p + t d = a + u (b - a)
+        const Point ab = b - a;
+        const FT den = cross(d, ab);
+        if(!(den != FT(0)))
+          continue;
+        const Point ap = a - p;
+        const FT t = cross(ap, ab) / den;
+        const FT u = cross(ap, d) / den;
+        if(t > -tolerance * length && u >= -tolerance && u <= FT(1) + tolerance && t < best_t)
+        {
+          best_t = t;
+          exit = e;
+          exit_u = u;
+        }
+      }
+      const Index f = Mesh::face(h);
+      if(exit == Mesh::no_halfedge || best_t >= length * (FT(1) - tolerance))
+        break; // the leg ends in this face
+      const FT u = exit_u < FT(0) ? FT(0) : (exit_u > FT(1) ? FT(1) : exit_u);
+      Point q = Point{p.x + best_t * d.x, p.y + best_t * d.y};
+      length -= best_t;
+      if(u <= tolerance || u >= FT(1) - tolerance)
+      {
+        // through a vertex w: a leg goes there only where it goes straight on (a flat vertex, or
+        // along a straight border), so it continues at the opposite polar angle, back +- pi
+        const int kw = u <= tolerance ? int(exit % 3) : int((exit + 1) % 3);
+        const Index cw = 3 * f + Index(kw);
+        const Index w = m_mesh.source(cw);
+        out.push_back(corner_point(f, kw));
+        if(w == end_vertex)
+          return;
+        Point back{-d.x, -d.y}, at{q.x, q.y};
+        change_frame(h, cw, at, back);
+        const FT theta = m_mesh.angle_sum(w);
+        const FT back_angle = m_mesh.corner_start_angle(cw) + atan2(back.y, back.x);
+        FT phi = back_angle + FT(CGAL_PI);
+        if(m_mesh.is_singular(w))
+        {
+          // a border: the corners' angles run from 0 to theta, not around
+          if(phi > theta)
+            phi = back_angle - FT(CGAL_PI);
+          phi = phi < FT(0) ? FT(0) : (phi > theta ? theta : phi);
+        }
+        else
+          phi = phi - theta * FT(std::floor(CGAL::to_double(phi / theta)));
+        Index next_corner = *m_mesh.corners_begin(w);
+        for(const Index* c = m_mesh.corners_begin(w); c != m_mesh.corners_end(w); ++c)
+          if(m_mesh.corner_start_angle(*c) <= phi &&
+             m_mesh.corner_start_angle(*c) >= m_mesh.corner_start_angle(next_corner))
+            next_corner = *c;
+        const FT local = phi - m_mesh.corner_start_angle(next_corner);
+        h = next_corner;
+        p = Point{FT(0), FT(0)};
+        d = Point{cos(local), sin(local)};
+        entry = h;
+        from_corner = true;
+        continue;
+      }
+      const Index o = m_mesh.opposite(exit);
+      Path_point x{Path_point::EDGE, f, {FT(0), FT(0), FT(0)}, Index(-1)};
+      x.barycentric[exit % 3] = FT(1) - u;
+      x.barycentric[(exit + 1) % 3] = u;
+      out.push_back(x);
+      if(o == Mesh::no_halfedge)
+        break; // onto the border: only rounding puts a leg there
+      // continue in the neighbour: the crossing and the direction in the frame of `exit`, then
+      // in the frame of its opposite halfedge (the same edge the other way, the face below)
+      change_frame(h, exit, q, d);
+      const FT len = m_mesh.length(exit);
+      p = Point{len - q.x, -q.y};
+      d = Point{-d.x, -d.y};
+      h = o;
+      entry = o;
+      from_corner = false;
+    }
+    out.push_back(end_vertex != no_vertex() ? vertex_point(end_vertex, Mesh::face(h)) : end_point);
+  }
+
+  static FT length_of(const Point& v) { return internal::length(v); }
+
+  const Mesh& m_mesh;
+};
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_PATH_TRACER_H
