@@ -21,6 +21,7 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <charconv>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -255,29 +256,43 @@ struct Run
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
+// A valid triangle soup goes to the solver as it is. Any other soup (polygons, inconsistent
+// orientations, edges of more than two faces, vertices where several fans meet, or input the
+// solver refuses) takes the path of repairs through a Surface_mesh, which accepts, repairs or
+// refuses it as before, and goes to the solver as the mesh's triangles. Either way the solver keeps
+// what it needs, so the soup is gone before the propagation: the peak memory is the larger of
+// input + solver and solver + propagation, not their sum.
 template <class Kernel>
 Run compute(dggvtp::Loaded_soup& soup, const Options& options)
 {
-  using Mesh = CGAL::Surface_mesh<typename Kernel::Point_3>;
+  using Solver = CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Kernel>;
   Run run;
-  const Clock::time_point start = Clock::now();
-  using Solver = CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh>;
-  // The solver keeps what it needs of the mesh, so the mesh is gone before the propagation: the
-  // peak memory is the larger of mesh + solver and solver + propagation, not their sum
-  // (bunny_1M: 64-87 MB less).
-  const Solver solver = [&] {
-    const Mesh mesh = dggvtp::make_triangle_mesh<Kernel>(soup);
-    run.seconds_make_mesh = seconds_since(start);
-    run.faces = num_faces(mesh);
-    const Clock::time_point t0 = Clock::now();
-    Solver prepared(mesh);
-    run.seconds_prepare = seconds_since(t0);
-    return prepared;
-  }();
+  std::optional<Solver> solver;
+  Clock::time_point t0 = Clock::now();
+  if(soup.polygons.empty())
+  {
+    try
+    {
+      solver.emplace(dggvtp::make_soup_solver<Solver>(soup));
+      if(solver->number_of_non_manifold_vertices() > 0)
+        solver.reset();
+    }
+    catch(const std::invalid_argument&)
+    {
+    }
+  }
+  if(!solver)
+  {
+    dggvtp::repair_into_triangles<Kernel>(soup);
+    run.seconds_make_mesh = seconds_since(t0);
+    t0 = Clock::now();
+    solver.emplace(dggvtp::make_soup_solver<Solver>(soup));
+  }
+  run.seconds_prepare = seconds_since(t0);
+  run.faces = soup.triangles.size();
+  dggvtp::release_soup(soup);
 
-  std::vector<typename Kernel::FT> d(solver.number_of_vertices());
-  const auto sources = dggvtp::mesh_vertices_of<typename Mesh::Vertex_index>(soup, options.source);
-  const auto np = CGAL::parameters::accuracy(options.epsilon);
+  std::vector<typename Solver::FT> d(solver->number_of_vertices());
   const Clock::time_point t1 = Clock::now();
   // the distances are the same bit for bit on any number of threads (and without TBB)
 #ifdef CGAL_LINKED_WITH_TBB
@@ -285,8 +300,9 @@ Run compute(dggvtp::Loaded_soup& soup, const Options& options)
   if(options.threads > 0)
     limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
 #endif
-  run.statistics = solver.template compute_distances_to_nearest_source<CGAL::Parallel_if_available_tag>(
-    sources, CGAL::make_property_map(d), np);
+  run.statistics = solver->template compute_distances_to_nearest_source<CGAL::Parallel_if_available_tag>(
+    dggvtp::solver_vertices_of(soup, options.source), CGAL::make_property_map(d),
+    CGAL::parameters::accuracy(options.epsilon));
   run.seconds_propagate = seconds_since(t1);
   run.distances = dggvtp::file_vertex_distances(soup, d);
   return run;
@@ -299,14 +315,28 @@ double peak_rss_mb()
   return double(usage.ru_maxrss) / 1024.;
 }
 
+// The text of printf's "%.17g\n" (and "inf\n"), formatted with std::to_chars into large blocks:
+// printf per line took most of the writing time.
 void write_distances(const std::vector<double>& distances, const std::string& path)
 {
   Output_file file(path);
+  std::vector<char> block(1 << 20);
+  const std::size_t longest_line = 32; // "-1.2345678901234567e-308\n" is 25
+  std::size_t used = 0;
+  const auto flush = [&] {
+    if(std::fwrite(block.data(), 1, used, file.get()) != used)
+      throw dggvtp::Input_error("cannot write '" + path + "'");
+    used = 0;
+  };
   for(double d : distances)
-    if(std::isinf(d))
-      std::fputs("inf\n", file.get());
-    else
-      std::fprintf(file.get(), "%.17g\n", d);
+  {
+    if(block.size() - used < longest_line)
+      flush();
+    char* end = std::to_chars(block.data() + used, block.data() + block.size(), d, std::chars_format::general, 17).ptr;
+    *end++ = '\n';
+    used = std::size_t(end - block.data());
+  }
+  flush();
   file.commit();
 }
 
@@ -368,8 +398,10 @@ int run_main(int argc, char** argv)
     std::cerr << "warning: dggvtp was built without TBB: the propagation ran on one thread\n";
 #endif
 
+  const Clock::time_point t_write = Clock::now();
   if(!options.output.empty())
     write_distances(run.distances, options.output);
+  const double seconds_write = seconds_since(t_write);
 
   double farthest = 0.;
   for(double d : run.distances)
@@ -383,12 +415,12 @@ int run_main(int argc, char** argv)
     std::fprintf(file.get(),
                  "{\"mesh\": %s, \"vertices\": %zu, \"faces\": %zu, \"source\": %zu, \"epsilon\": %.17g, "
                  "\"precision\": \"%s\", \"threads\": %ld, \"seconds_load\": %.6f, \"seconds_prepare\": %.6f, "
-                 "\"seconds_propagate\": %.6f, \"windows_created\": %zu, \"windows_peak\": %zu, "
+                 "\"seconds_propagate\": %.6f, \"seconds_write\": %.6f, \"windows_created\": %zu, \"windows_peak\": %zu, "
                  "\"pseudo_sources\": %zu, \"vertices_popped\": %zu, \"vertices_reached\": %zu, "
                  "\"max_distance\": %.17g, \"peak_rss_mb\": %.1f}\n",
                  json_string(options.mesh).c_str(), soup.file_vertices, run.faces, options.source, options.epsilon,
                  options.precision.c_str(), options.threads, seconds_load, run.seconds_prepare,
-                 run.seconds_propagate, s.windows_created, s.windows_peak, s.pseudo_sources, s.vertices_popped,
+                 run.seconds_propagate, seconds_write, s.windows_created, s.windows_peak, s.pseudo_sources, s.vertices_popped,
                  s.vertices_reached, farthest, rss);
     file.commit();
   }
@@ -403,7 +435,7 @@ int run_main(int argc, char** argv)
         << (options.epsilon > 0. ? "DGG-VTP epsilon " + std::to_string(options.epsilon) : std::string("exact (VTP)"))
         << ", " << options.precision << "\n"
         << "  load " << seconds_load << " s, prepare " << run.seconds_prepare << " s, propagate "
-        << run.seconds_propagate << " s\n"
+        << run.seconds_propagate << " s, write " << seconds_write << " s\n"
         << "  windows created " << s.windows_created << ", peak " << s.windows_peak << ", pseudo-sources "
         << s.pseudo_sources << "\n"
         << "  reached " << reached << " of " << soup.file_vertices << " vertices, farthest at " << farthest << "\n"

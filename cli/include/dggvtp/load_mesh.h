@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -27,6 +28,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace dggvtp {
@@ -43,7 +45,11 @@ struct Loaded_soup
 {
   using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
   std::vector<Point> points;                     // the file's points, then the duplicates made by repairs
-  std::vector<std::vector<std::size_t>> polygons;
+  // the faces when all are triangles, each with its corners in the order of the face of a
+  // Surface_mesh made from the file (its halfedge(f) starts at the third vertex), so that the
+  // propagation, and the distances to the last bit, do not depend on the path through loading;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::vector<std::size_t>> polygons; // or else the polygons
   std::size_t file_vertices = 0;                 // points declared by the file
   std::vector<std::size_t> file_vertex_of;       // per point: the file vertex it stands for
   std::vector<std::string> repairs;              // what loading changed, for a warning
@@ -566,6 +572,12 @@ inline void check_ply_declarations(const std::string& path)
   }
 }
 
+template <class Polygon>
+std::array<std::uint32_t, 3> as_surface_mesh_face(const Polygon& p)
+{
+  return {std::uint32_t(p[2]), std::uint32_t(p[0]), std::uint32_t(p[1])};
+}
+
 inline Loaded_soup load_soup(const std::string& path)
 {
   Loaded_soup soup;
@@ -612,7 +624,54 @@ inline Loaded_soup load_soup(const std::string& path)
   soup.file_vertex_of.resize(soup.points.size());
   for(std::size_t i = 0; i < soup.points.size(); ++i)
     soup.file_vertex_of[i] = i;
+  if(soup.points.size() < std::numeric_limits<std::uint32_t>::max() &&
+     std::all_of(soup.polygons.begin(), soup.polygons.end(), [](const auto& p) { return p.size() == 3; }))
+  {
+    soup.triangles.reserve(soup.polygons.size());
+    for(const auto& p : soup.polygons)
+      soup.triangles.push_back(as_surface_mesh_face(p));
+    std::vector<std::vector<std::size_t>>().swap(soup.polygons);
+  }
   return soup;
+}
+
+// what the repairs work on, when the triangles do not go to the solver as they are
+inline void triangles_to_polygons(Loaded_soup& soup)
+{
+  soup.polygons.reserve(soup.triangles.size());
+  for(const auto& t : soup.triangles)
+    soup.polygons.push_back({t[1], t[2], t[0]});
+  std::vector<std::array<std::uint32_t, 3>>().swap(soup.triangles);
+}
+
+// A solver of the soup's triangles (a Triangle_soup_geodesic_distance_solver). Throws
+// std::invalid_argument as the solver does.
+template <class Solver>
+Solver make_soup_solver(const Loaded_soup& soup)
+{
+  using Point = typename Solver::Traits::Point_3;
+  using FT = typename Solver::Traits::FT;
+  if constexpr(std::is_same<Point, Loaded_soup::Point>::value)
+    return Solver(soup.points, soup.triangles);
+  else
+  {
+    // Converted into an array first, not by a point map: GCC 12.2's vectorizer (-O2) drops the
+    // rounding to float of a point made and read in the same loop, so float input would be read
+    // in double.
+    std::vector<Point> points;
+    points.reserve(soup.points.size());
+    for(const auto& p : soup.points)
+      points.emplace_back(FT(p.x()), FT(p.y()), FT(p.z()));
+    return Solver(points, soup.triangles);
+  }
+}
+
+// the solver holds everything now: give the soup's memory back before the propagation
+inline void release_soup(Loaded_soup& soup)
+{
+  std::vector<Loaded_soup::Point>().swap(soup.points);
+  std::vector<std::array<std::uint32_t, 3>>().swap(soup.triangles);
+  std::vector<std::vector<std::size_t>>().swap(soup.polygons);
 }
 
 // Orients the polygons consistently, splitting non-manifold vertices (appended copies).
@@ -778,11 +837,13 @@ CGAL::Surface_mesh<typename Kernel::Point_3> soup_to_mesh(const Loaded_soup& sou
 
 } // namespace internal
 
-// The soup as a triangle mesh with the point type of `Kernel`; mesh vertex i is soup point i.
-// Consumes the soup's points and polygons.
+// The soup's faces repaired into a triangle mesh with the point type of `Kernel` (mesh vertex i
+// is soup point i); consumes the faces.
 template <class Kernel>
 CGAL::Surface_mesh<typename Kernel::Point_3> make_triangle_mesh(Loaded_soup& soup)
 {
+  if(soup.polygons.empty())
+    triangles_to_polygons(soup);
   internal::triangulate_soup(soup);
   // A face that does not fit (inconsistent orientation, more than two faces on an edge) is left
   // out by the conversion; only then is the soup oriented, which on a clean million-face file
@@ -805,21 +866,34 @@ CGAL::Surface_mesh<typename Kernel::Point_3> make_triangle_mesh(Loaded_soup& sou
   if(!pinched_vertices.empty())
     soup.repairs.push_back("kept " + std::to_string(pinched_vertices.size()) +
                            " non-manifold vertices, where separate fans of faces meet");
-  // the mesh holds everything now: give the soup's memory back before the propagation
-  std::vector<typename Loaded_soup::Point>().swap(soup.points);
   std::vector<std::vector<std::size_t>>().swap(soup.polygons);
   return mesh;
 }
 
-// The vertices of the mesh made from `soup` that stand for its file vertex `file_vertex`: the
-// vertex itself and the copies loading made of it (a source is a source on every sheet).
-template <class VertexIndex>
-std::vector<VertexIndex> mesh_vertices_of(const Loaded_soup& soup, std::size_t file_vertex)
+// The soup's polygons repaired as make_triangle_mesh() does, replaced with the triangles of the
+// mesh, the corners of each in the mesh's order.
+template <class Kernel>
+void repair_into_triangles(Loaded_soup& soup)
 {
-  std::vector<VertexIndex> out;
+  const auto mesh = make_triangle_mesh<Kernel>(soup);
+  soup.triangles.clear();
+  soup.triangles.reserve(num_faces(mesh));
+  for(auto f : faces(mesh))
+  {
+    const auto h = halfedge(f, mesh);
+    soup.triangles.push_back({std::uint32_t(source(h, mesh)), std::uint32_t(target(h, mesh)),
+                              std::uint32_t(target(next(h, mesh), mesh))});
+  }
+}
+
+// The solver's vertices that stand for the file vertex `file_vertex`: the vertex itself and the
+// copies loading made of it (a source is a source on every sheet).
+inline std::vector<std::size_t> solver_vertices_of(const Loaded_soup& soup, std::size_t file_vertex)
+{
+  std::vector<std::size_t> out;
   for(std::size_t i = 0; i < soup.file_vertex_of.size(); ++i)
     if(soup.file_vertex_of[i] == file_vertex)
-      out.push_back(VertexIndex(static_cast<typename VertexIndex::size_type>(i)));
+      out.push_back(i);
   return out;
 }
 

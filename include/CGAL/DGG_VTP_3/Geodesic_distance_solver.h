@@ -13,7 +13,7 @@
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
 #include <CGAL/DGG_VTP_3/internal/Query_builder.h>
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
-#include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/unfold_input.h>
 #include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
 
 #include <CGAL/Default.h>
@@ -39,6 +39,22 @@
 
 namespace CGAL {
 namespace DGG_VTP_3 {
+namespace internal {
+
+// the default index maps, looked up only when no map type is given (a triangle soup has none)
+template <class TriangleMesh>
+struct Vertex_index_map_of
+{
+  using type = typename GetInitializedVertexIndexMap<TriangleMesh>::const_type;
+};
+
+template <class TriangleMesh>
+struct Face_index_map_of
+{
+  using type = typename GetInitializedFaceIndexMap<TriangleMesh>::const_type;
+};
+
+} // namespace internal
 
 /*!
  * \ingroup PkgDGGVTP3Ref
@@ -75,18 +91,16 @@ template <class TriangleMesh,
 class Geodesic_distance_solver
 {
 public:
-  using Traits = typename Default::Get<GeomTraits, typename GetGeomTraits<TriangleMesh>::type>::type;
+  using Traits = typename Default::Lazy_get<GeomTraits, GetGeomTraits<TriangleMesh>>::type;
   using FT = typename Traits::FT;
-  using Vertex_index_map = typename Default::Get<VertexIndexMap,
-                             typename GetInitializedVertexIndexMap<TriangleMesh>::const_type>::type;
-  using Face_index_map = typename Default::Get<FaceIndexMap,
-                           typename GetInitializedFaceIndexMap<TriangleMesh>::const_type>::type;
+  using Vertex_index_map = typename Default::Lazy_get<VertexIndexMap, internal::Vertex_index_map_of<TriangleMesh>>::type;
+  using Face_index_map = typename Default::Lazy_get<FaceIndexMap, internal::Face_index_map_of<TriangleMesh>>::type;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   /// a point of the surface, the type of `CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, FT>`
   using Face_location = std::pair<face_descriptor, std::array<FT, 3>>;
 
-private:
+protected:
   using Computation_FT = typename std::conditional<std::is_same<FT, float>::value, double, FT>::type;
   using Mesh = internal::Unfolded_mesh<Computation_FT>;
 
@@ -146,17 +160,13 @@ public:
       m_vim, m_fim,
       parameters::choose_parameter<Traits>(parameters::get_parameter(np, internal_np::geom_traits)),
       m_mesh);
-    m_partition = internal::Patch_partition<Computation_FT>(m_mesh);
     m_vertices.resize(m_mesh.number_of_vertices());
     for(vertex_descriptor v : vertices(tm))
       m_vertices[static_cast<std::size_t>(get(m_vim, v))] = v;
     m_faces.resize(m_mesh.number_of_faces());
     for(face_descriptor f : faces(tm))
       m_faces[static_cast<std::size_t>(get(m_fim, f))] = f;
-    m_internal_face.resize(order.size());
-    for(std::size_t f = 0; f < order.size(); ++f)
-      m_internal_face[order[f]] = Index(f);
-    m_user_face = order;
+    index_faces(order);
   }
 
   /*!
@@ -323,11 +333,39 @@ public:
 
   std::size_t number_of_vertices() const { return m_vertices.size(); }
 
+  /// the number of vertices where several fans of faces meet; they are kept as they are, and
+  /// shortest paths may go from one fan to another through them
+  std::size_t number_of_non_manifold_vertices() const { return m_mesh.number_of_non_manifold_vertices(); }
+
+protected:
+  // for a solver whose vertices and faces are numbers, 0 to n-1, given the unfolded mesh
+  // and the order of its faces (see internal::unfold_triangles())
+  Geodesic_distance_solver(Mesh&& mesh, const std::vector<std::uint32_t>& order)
+    : m_mesh(std::move(mesh))
+  {
+    m_vertices.resize(m_mesh.number_of_vertices());
+    for(std::size_t i = 0; i < m_vertices.size(); ++i)
+      m_vertices[i] = vertex_descriptor(i);
+    m_faces.resize(m_mesh.number_of_faces());
+    for(std::size_t i = 0; i < m_faces.size(); ++i)
+      m_faces[i] = face_descriptor(i);
+    index_faces(order);
+  }
+
 private:
   friend class Shortest_path_tree<Geodesic_distance_solver>;
 
 
   using Index = typename Mesh::Index;
+
+  void index_faces(const std::vector<Index>& order)
+  {
+    m_partition = internal::Patch_partition<Computation_FT>(m_mesh);
+    m_internal_face.resize(order.size());
+    for(std::size_t f = 0; f < order.size(); ++f)
+      m_internal_face[order[f]] = Index(f);
+    m_user_face = order;
+  }
 
   Index checked_vertex(vertex_descriptor v) const
   {

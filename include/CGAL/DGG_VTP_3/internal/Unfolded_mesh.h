@@ -9,12 +9,7 @@
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
-#include <CGAL/boost/graph/helpers.h>
-#include <CGAL/boost/graph/iterator.h>
-#include <CGAL/boost/graph/properties.h>
 #include <CGAL/number_utils.h>
-
-#include <boost/graph/graph_traits.hpp>
 
 #include <cmath>
 #include <algorithm>
@@ -78,14 +73,12 @@ public:
   // geodesics may bend there: saddle (angle sum above 2*pi), border or non-manifold vertex
   bool is_exact_pseudo_source(Index v) const { return m_exact_pseudo_source[v] != 0; }
 
+  // vertices where several fans of faces meet (kept: geodesics may pass through them)
+  std::size_t number_of_non_manifold_vertices() const { return m_non_manifold_vertices; }
+
   template <class FT_>
-  friend void reorder_faces(const std::vector<std::uint32_t>& order, Unfolded_mesh<FT_>& out);
-  // fills the mesh from a user's triangle mesh (a free function: the graph's next(), source()...
-  // would be hidden inside the class by the members of the same names)
-  template <class FT_, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
-            class GeomTraits>
-  friend std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
-                                   FaceIndexMap fim, const GeomTraits& gt, Unfolded_mesh<FT_>& out);
+  friend std::vector<std::uint32_t> unfold_triangles(std::vector<FT_> xyz, std::vector<std::uint32_t> corner_vertex,
+                                                     std::vector<std::uint32_t> opposite, Unfolded_mesh<FT_>& out);
 
 private:
   std::vector<Index> m_corner_vertex;       // 3F: vertex at each corner
@@ -99,6 +92,7 @@ private:
   std::vector<FT> m_angle_sum;              // V: total angle, radians
   std::vector<char> m_singular;             // V: border or non-manifold vertex
   std::vector<char> m_exact_pseudo_source;  // V: pseudo-source of the exact (VTP) propagation
+  std::size_t m_non_manifold_vertices = 0;
 };
 
 // Halfedges are numbered 3 f + k in 32 bits, the largest number meaning "none": throws
@@ -174,97 +168,60 @@ std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
 
 // renumbers the faces: new face i is the user's face order[i] (the corners' vertices and the
 // opposite halfedges, the only per-face data so far)
-template <class FT>
-void reorder_faces(const std::vector<std::uint32_t>& order, Unfolded_mesh<FT>& out)
+inline void reorder_faces(const std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& corner_vertex,
+                          std::vector<std::uint32_t>& opposite)
 {
-  using Index = typename Unfolded_mesh<FT>::Index;
+  constexpr std::uint32_t none = std::uint32_t(-1);
   const std::size_t nf = order.size();
-  std::vector<Index> new_face(nf);
+  std::vector<std::uint32_t> new_face(nf);
   for(std::size_t f = 0; f < nf; ++f)
-    new_face[order[f]] = Index(f);
-  std::vector<Index> corner_vertex(3 * nf), opposite(3 * nf);
+    new_face[order[f]] = std::uint32_t(f);
+  std::vector<std::uint32_t> reordered_vertex(3 * nf), reordered_opposite(3 * nf);
   for(std::size_t f = 0; f < nf; ++f)
     for(int k = 0; k < 3; ++k)
     {
-      corner_vertex[3 * f + k] = out.m_corner_vertex[3 * order[f] + k];
-      const Index h = out.m_opposite[3 * order[f] + k];
-      opposite[3 * f + k] = h == Unfolded_mesh<FT>::no_halfedge ? h : 3 * new_face[h / 3] + h % 3;
+      reordered_vertex[3 * f + k] = corner_vertex[3 * order[f] + k];
+      const std::uint32_t h = opposite[3 * order[f] + k];
+      reordered_opposite[3 * f + k] = h == none ? h : 3 * new_face[h / 3] + h % 3;
     }
-  out.m_corner_vertex.swap(corner_vertex);
-  out.m_opposite.swap(opposite);
+  corner_vertex.swap(reordered_vertex);
+  opposite.swap(reordered_opposite);
 }
 
-// Returns the order of the faces: new face i is the user's face order[i] (by the face index map).
-template <class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
-          class GeomTraits>
-std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
-                          FaceIndexMap fim, const GeomTraits& gt, Unfolded_mesh<FT>& out)
+// The corners (halfedges 3f+k) grouped by their vertex, in CSR form: those of vertex v are
+// corners[begin[v]] to corners[begin[v+1]-1], in increasing order.
+inline void group_corners_by_vertex(const std::vector<std::uint32_t>& corner_vertex, std::size_t nv,
+                                    std::vector<std::uint32_t>& begin, std::vector<std::uint32_t>& corners)
+{
+  begin.assign(nv + 1, 0);
+  for(std::uint32_t v : corner_vertex)
+    ++begin[v + 1];
+  for(std::size_t v = 0; v < nv; ++v)
+    begin[v + 1] += begin[v];
+  corners.resize(corner_vertex.size());
+  std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
+  for(std::uint32_t h = 0; h < corner_vertex.size(); ++h)
+    corners[fill[corner_vertex[h]]++] = h;
+}
+
+// Fills the mesh from the coordinates of the vertices (3 per vertex), the vertex at each corner
+// and the opposite of each halfedge (`no_halfedge` on the border), faces in the user's order;
+// checks the geometry. Returns the order of the faces: new face i is the user's face order[i].
+template <class FT>
+std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std::uint32_t> corner_vertex,
+                                            std::vector<std::uint32_t> opposite, Unfolded_mesh<FT>& out)
 {
   using Index = typename Unfolded_mesh<FT>::Index;
   constexpr Index no_halfedge = Unfolded_mesh<FT>::no_halfedge;
-  using Graph_traits = boost::graph_traits<TriangleMesh>;
-  using halfedge_descriptor = typename Graph_traits::halfedge_descriptor;
-
-  const std::size_t nv = static_cast<std::size_t>(num_vertices(tm));
-  const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
-  if(!CGAL::is_triangle_mesh(tm))
-    throw std::invalid_argument("the mesh has faces that are not triangles");
-  check_index_range<FT>(nv, nf);
-
-  // coordinates, checked once
-  std::vector<FT> xyz(3 * nv);
-  std::vector<char> vertex_seen(nv, 0);
-  typename GeomTraits::Compute_x_3 x_of = gt.compute_x_3_object();
-  typename GeomTraits::Compute_y_3 y_of = gt.compute_y_3_object();
-  typename GeomTraits::Compute_z_3 z_of = gt.compute_z_3_object();
-  for(auto v : vertices(tm))
-  {
-    const std::size_t i = static_cast<std::size_t>(get(vim, v));
-    if(i >= nv || vertex_seen[i])
-      throw std::invalid_argument("the vertex index map is not a bijection onto [0, num_vertices)");
-    vertex_seen[i] = 1;
-    const auto& p = get(vpm, v);
-    xyz[3 * i] = x_of(p);
-    xyz[3 * i + 1] = y_of(p);
-    xyz[3 * i + 2] = z_of(p);
-    for(int c = 0; c < 3; ++c)
-      if(!CGAL::is_finite(xyz[3 * i + c]))
-        throw std::invalid_argument("vertex " + std::to_string(i) + " has a coordinate that is not finite");
-  }
-
-  out.m_corner_vertex.resize(3 * nf);
-  out.m_opposite.resize(3 * nf);
+  const std::size_t nv = xyz.size() / 3;
+  const std::size_t nf = corner_vertex.size() / 3;
+  const std::vector<Index> order = faces_in_space_order(xyz, corner_vertex);
+  reorder_faces(order, corner_vertex, opposite);
+  out.m_corner_vertex.swap(corner_vertex);
+  out.m_opposite.swap(opposite);
   out.m_length.resize(3 * nf);
   out.m_apex_x.resize(3 * nf);
   out.m_twice_area.resize(nf);
-  std::vector<char> face_seen(nf, 0);
-  for(auto f : faces(tm))
-  {
-    const std::size_t fi = static_cast<std::size_t>(get(fim, f));
-    if(fi >= nf || face_seen[fi])
-      throw std::invalid_argument("the face index map is not a bijection onto [0, num_faces)");
-    face_seen[fi] = 1;
-    halfedge_descriptor h = halfedge(f, tm);
-    for(int k = 0; k < 3; ++k, h = next(h, tm))
-    {
-      const Index hi = Index(3 * fi + k);
-      out.m_corner_vertex[hi] = Index(get(vim, source(h, tm)));
-      const halfedge_descriptor o = opposite(h, tm);
-      if(is_border(o, tm))
-        out.m_opposite[hi] = no_halfedge;
-      else
-      {
-        const auto fo = face(o, tm);
-        halfedge_descriptor g = halfedge(fo, tm);
-        int ko = 0;
-        while(g != o) { g = next(g, tm); ++ko; }
-        out.m_opposite[hi] = Index(3 * get(fim, fo) + ko);
-      }
-    }
-  }
-
-  const std::vector<Index> order = faces_in_space_order(xyz, out.m_corner_vertex);
-  reorder_faces(order, out);
 
   // unfold each triangle onto each of its three edges; the area comes from the two shortest edges
   // (errors name the face by the user's index)
@@ -317,17 +274,7 @@ std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPo
   xyz = std::vector<FT>(); // its memory is the peak's
 
   // corners around each vertex (CSR), angle sums, border vertices
-  out.m_vertex_corners_begin.assign(nv + 1, 0);
-  for(Index h = 0; h < 3 * nf; ++h)
-    ++out.m_vertex_corners_begin[out.m_corner_vertex[h] + 1];
-  for(std::size_t v = 0; v < nv; ++v)
-    out.m_vertex_corners_begin[v + 1] += out.m_vertex_corners_begin[v];
-  out.m_vertex_corners.resize(3 * nf);
-  {
-    std::vector<Index> fill(out.m_vertex_corners_begin.begin(), out.m_vertex_corners_begin.end() - 1);
-    for(Index h = 0; h < 3 * nf; ++h)
-      out.m_vertex_corners[fill[out.m_corner_vertex[h]]++] = h;
-  }
+  group_corners_by_vertex(out.m_corner_vertex, nv, out.m_vertex_corners_begin, out.m_vertex_corners);
 
   out.m_angle_sum.assign(nv, FT(0));
   out.m_singular.assign(nv, 0);
@@ -374,7 +321,10 @@ std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPo
     if(ordered.size() == std::size_t(last - first))
       std::copy(ordered.begin(), ordered.end(), first);
     else
+    {
       out.m_singular[v] = 1;
+      ++out.m_non_manifold_vertices;
+    }
   }
 
   // Windows wrap around the tip of a closed fan (a cone) about pi / angle times before the ICH
