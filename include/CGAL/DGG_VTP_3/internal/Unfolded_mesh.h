@@ -114,6 +114,28 @@ inline std::string to_short_string(double x)
   return buffer;
 }
 
+// Sorts (key, face) pairs by key, faces of equal keys in increasing order, as std::sort would:
+// a least significant digit first radix sort of the 63-bit keys, a few times faster.
+inline void sort_by_key(std::vector<std::pair<std::uint64_t, std::uint32_t>>& keys)
+{
+  constexpr int digit_bits = 11;
+  constexpr std::uint64_t digit_mask = (std::uint64_t(1) << digit_bits) - 1;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> sorted(keys.size());
+  for(int shift = 0; shift < 64; shift += digit_bits)
+  {
+    std::vector<std::size_t> first(digit_mask + 2, 0);
+    for(const auto& k : keys)
+      ++first[((k.first >> shift) & digit_mask) + 1];
+    if(std::count(first.begin(), first.end(), keys.size()) == 1)
+      continue; // one digit for all: nothing moves
+    for(std::size_t d = 0; d <= digit_mask; ++d)
+      first[d + 1] += first[d];
+    for(const auto& k : keys)
+      sorted[first[(k.first >> shift) & digit_mask]++] = k;
+    keys.swap(sorted);
+  }
+}
+
 // Faces along a Z-order (Morton) curve of their centroids: faces near each other in the order are
 // near each other on the surface, so that the propagation's working set is a few compact blocks of
 // memory whatever the order of the user's faces, and a range of faces is a compact patch.
@@ -122,18 +144,23 @@ std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
                                                 const std::vector<std::uint32_t>& corner_vertex)
 {
   const std::size_t nf = corner_vertex.size() / 3;
-  double low[3] = {0., 0., 0.}, extent = 0.;
+  const std::size_t nv = xyz.size() / 3;
+  // the bounding box of the vertices the faces use
+  std::vector<char> used(nv, 0);
+  for(std::uint32_t v : corner_vertex)
+    used[v] = 1;
+  double low[3], high[3], extent = 0.;
+  std::fill(low, low + 3, std::numeric_limits<double>::infinity());
+  std::fill(high, high + 3, -std::numeric_limits<double>::infinity());
+  for(std::size_t v = 0; v < nv; ++v)
+    if(used[v])
+      for(int c = 0; c < 3; ++c)
+      {
+        low[c] = (std::min)(low[c], CGAL::to_double(xyz[3 * v + c]));
+        high[c] = (std::max)(high[c], CGAL::to_double(xyz[3 * v + c]));
+      }
   for(int c = 0; c < 3; ++c)
-  {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for(std::uint32_t v : corner_vertex)
-    {
-      lo = (std::min)(lo, CGAL::to_double(xyz[3 * v + c]));
-      hi = (std::max)(hi, CGAL::to_double(xyz[3 * v + c]));
-    }
-    low[c] = lo;
-    extent = (std::max)(extent, hi - lo);
-  }
+    extent = (std::max)(extent, high[c] - low[c]);
   // 21 bits a coordinate, interleaved
   const auto spread = [](std::uint64_t x) {
     x &= 0x1fffff;
@@ -148,18 +175,19 @@ std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(nf);
   for(std::size_t f = 0; f < nf; ++f)
   {
+    double centroid[3] = {0., 0., 0.};
+    for(int k = 0; k < 3; ++k)
+      for(int c = 0; c < 3; ++c)
+        centroid[c] += CGAL::to_double(xyz[3 * corner_vertex[3 * f + k] + c]) / 3.;
     std::uint64_t key = 0;
     for(int c = 0; c < 3; ++c)
     {
-      double centroid = 0.;
-      for(int k = 0; k < 3; ++k)
-        centroid += CGAL::to_double(xyz[3 * corner_vertex[3 * f + k] + c]) / 3.;
-      const double cell = (std::min)((std::max)((centroid - low[c]) * scale, 0.), double((1 << 21) - 1));
+      const double cell = (std::min)((std::max)((centroid[c] - low[c]) * scale, 0.), double((1 << 21) - 1));
       key |= spread(std::uint64_t(cell)) << c;
     }
     keys[f] = {key, std::uint32_t(f)};
   }
-  std::sort(keys.begin(), keys.end());
+  sort_by_key(keys);
   std::vector<std::uint32_t> order(nf);
   for(std::size_t f = 0; f < nf; ++f)
     order[f] = keys[f].second;
@@ -167,7 +195,7 @@ std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
 }
 
 // renumbers the faces: new face i is the user's face order[i] (the corners' vertices and the
-// opposite halfedges, the only per-face data so far)
+// opposite halfedges if known, the only per-face data so far)
 inline void reorder_faces(const std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& corner_vertex,
                           std::vector<std::uint32_t>& opposite)
 {
@@ -176,16 +204,20 @@ inline void reorder_faces(const std::vector<std::uint32_t>& order, std::vector<s
   std::vector<std::uint32_t> new_face(nf);
   for(std::size_t f = 0; f < nf; ++f)
     new_face[order[f]] = std::uint32_t(f);
-  std::vector<std::uint32_t> reordered_vertex(3 * nf), reordered_opposite(3 * nf);
+  std::vector<std::uint32_t> reordered_vertex(3 * nf), reordered_opposite(opposite.empty() ? 0 : 3 * nf);
   for(std::size_t f = 0; f < nf; ++f)
     for(int k = 0; k < 3; ++k)
     {
       reordered_vertex[3 * f + k] = corner_vertex[3 * order[f] + k];
-      const std::uint32_t h = opposite[3 * order[f] + k];
-      reordered_opposite[3 * f + k] = h == none ? h : 3 * new_face[h / 3] + h % 3;
+      if(!opposite.empty())
+      {
+        const std::uint32_t h = opposite[3 * order[f] + k];
+        reordered_opposite[3 * f + k] = h == none ? h : 3 * new_face[h / 3] + h % 3;
+      }
     }
   corner_vertex.swap(reordered_vertex);
-  opposite.swap(reordered_opposite);
+  if(!opposite.empty())
+    opposite.swap(reordered_opposite);
 }
 
 // The corners (halfedges 3f+k) grouped by their vertex, in CSR form: those of vertex v are
@@ -204,9 +236,52 @@ inline void group_corners_by_vertex(const std::vector<std::uint32_t>& corner_ver
     corners[fill[corner_vertex[h]]++] = h;
 }
 
+// The opposite of each halfedge a->b: the one halfedge b->a, or `no_halfedge` on the border.
+// Both have a corner at a (a->b is the halfedge of its corner there, b->a the one before its
+// corner there), so each vertex's corners (CSR `begin`, `corners`) are matched among themselves.
+// Throws std::invalid_argument where two halfedges go from a to b: the faces do not form a
+// surface as they are. Faces are named by the user's numbering, `order`.
+inline std::vector<std::uint32_t> matched_halfedges(const std::vector<std::uint32_t>& corner_vertex,
+                                                   const std::vector<std::uint32_t>& begin,
+                                                   const std::vector<std::uint32_t>& corners,
+                                                   const std::vector<std::uint32_t>& order)
+{
+  const auto next = [](std::uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; };
+  const auto prev = [](std::uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; };
+  std::vector<std::uint32_t> opposite(corner_vertex.size(), std::uint32_t(-1));
+  std::vector<std::uint32_t> ahead, behind; // per corner at a: the vertex after it, the vertex before it
+  for(std::size_t a = 0; a + 1 < begin.size(); ++a)
+  {
+    const std::uint32_t* first = corners.data() + begin[a];
+    const std::size_t n = begin[a + 1] - begin[a];
+    ahead.resize(n);
+    behind.resize(n);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      ahead[i] = corner_vertex[next(first[i])];
+      behind[i] = corner_vertex[prev(first[i])];
+    }
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t j = 0; j < n; ++j)
+      {
+        if(behind[j] == ahead[i])
+          opposite[first[i]] = prev(first[j]);
+        if(j > i && ahead[j] == ahead[i])
+          throw std::invalid_argument("triangles " + std::to_string(order[first[i] / 3]) + " and " +
+                                      std::to_string(order[first[j] / 3]) + " both go from vertex " +
+                                      std::to_string(a) + " to vertex " + std::to_string(ahead[i]) +
+                                      ": their orientations disagree, or more than two triangles share the edge "
+                                      "(CGAL::Polygon_mesh_processing::orient_polygon_soup() repairs both)");
+      }
+  }
+  return opposite;
+}
+
 // Fills the mesh from the coordinates of the vertices (3 per vertex), the vertex at each corner
 // and the opposite of each halfedge (`no_halfedge` on the border), faces in the user's order;
-// checks the geometry. Returns the order of the faces: new face i is the user's face order[i].
+// checks the geometry. With no opposites given (a triangle soup), each halfedge a->b is matched
+// with the one halfedge b->a, if any. Returns the order of the faces: new face i is the user's
+// face order[i].
 template <class FT>
 std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std::uint32_t> corner_vertex,
                                             std::vector<std::uint32_t> opposite, Unfolded_mesh<FT>& out)
@@ -218,6 +293,10 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   const std::vector<Index> order = faces_in_space_order(xyz, corner_vertex);
   reorder_faces(order, corner_vertex, opposite);
   out.m_corner_vertex.swap(corner_vertex);
+  // corners around each vertex (CSR); the faces' spatial order makes walking them cache-friendly
+  group_corners_by_vertex(out.m_corner_vertex, nv, out.m_vertex_corners_begin, out.m_vertex_corners);
+  if(opposite.empty())
+    opposite = matched_halfedges(out.m_corner_vertex, out.m_vertex_corners_begin, out.m_vertex_corners, order);
   out.m_opposite.swap(opposite);
   out.m_length.resize(3 * nf);
   out.m_apex_x.resize(3 * nf);
@@ -273,14 +352,14 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   }
   xyz = std::vector<FT>(); // its memory is the peak's
 
-  // corners around each vertex (CSR), angle sums, border vertices
-  group_corners_by_vertex(out.m_corner_vertex, nv, out.m_vertex_corners_begin, out.m_vertex_corners);
-
+  // angle sums, border vertices
   out.m_angle_sum.assign(nv, FT(0));
   out.m_singular.assign(nv, 0);
+  std::vector<FT> corner_angle(3 * nf); // computed once: atan2 is a good part of the unfolding's time
   for(Index h = 0; h < 3 * nf; ++h)
   {
-    out.m_angle_sum[out.source(h)] += out.corner_angle(h);
+    corner_angle[h] = out.corner_angle(h);
+    out.m_angle_sum[out.source(h)] += corner_angle[h];
     if(out.m_opposite[h] == Unfolded_mesh<FT>::no_halfedge)
     {
       out.m_singular[out.source(h)] = 1;
@@ -293,13 +372,16 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   // at which it starts, so that a direction at a vertex is one number in [0, angle sum).
   // A vertex whose corners are not one fan (several umbrellas meet there) is singular.
   out.m_corner_start_angle.assign(3 * nf, FT(0));
+  // Vertices in the faces' spatial order: their corners' faces are then near each other in memory.
   std::vector<Index> ordered;
-  for(std::size_t v = 0; v < nv; ++v)
+  std::vector<char> done(nv, 0);
+  for(Index v : out.m_corner_vertex)
   {
+    if(done[v])
+      continue;
+    done[v] = 1;
     Index* first = out.m_vertex_corners.data() + out.m_vertex_corners_begin[v];
     Index* last = out.m_vertex_corners.data() + out.m_vertex_corners_begin[v + 1];
-    if(first == last)
-      continue;
     Index start = *first;
     for(Index* c = first; c != last; ++c)
       if(out.m_opposite[*c] == Unfolded_mesh<FT>::no_halfedge)
@@ -311,7 +393,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
     {
       ordered.push_back(h);
       out.m_corner_start_angle[h] = angle;
-      angle += out.corner_angle(h);
+      angle += corner_angle[h];
       const Index across = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
       if(across == Unfolded_mesh<FT>::no_halfedge)
         break;
@@ -354,7 +436,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
         while(h != no_halfedge && !walked[h])
         {
           walked[h] = 1;
-          angle += out.corner_angle(h);
+          angle += corner_angle[h];
           h = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
         }
         if(h == *first && angle > FT(0))

@@ -27,8 +27,8 @@ namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
 
-// The user's input, a triangle mesh or a triangle soup, as the three arrays `unfold_triangles()`
-// works from: coordinates per vertex, vertex per corner and opposite halfedge per halfedge.
+// The user's input, a triangle mesh or a triangle soup, as the arrays `unfold_triangles()` works
+// from: coordinates per vertex, vertex per corner and, for a mesh, opposite halfedge per halfedge.
 
 // Reads point `p` (through the traits) into xyz[3i..3i+2]; throws for a coordinate that is not finite.
 template <class FT, class GeomTraits, class Point>
@@ -149,25 +149,7 @@ std::vector<std::uint32_t> unfold_triangle_soup(const PointRange& points, const 
     ++f;
   }
 
-  // the opposite of halfedge a->b is the one halfedge b->a, looked for among the corners at b
-  std::vector<Index> begin, corners;
-  group_corners_by_vertex(corner_vertex, nv, begin, corners);
-  const auto target = [&](Index h) { return corner_vertex[Unfolded_mesh<FT>::next(h)]; };
-  std::vector<Index> opposite(3 * nf, Unfolded_mesh<FT>::no_halfedge);
-  for(Index h = 0; h < 3 * nf; ++h)
-  {
-    const Index a = corner_vertex[h], b = target(h);
-    for(Index c = begin[a]; c < begin[a + 1]; ++c)
-      if(corners[c] != h && target(corners[c]) == b)
-        throw std::invalid_argument("triangles " + std::to_string(h / 3) + " and " + std::to_string(corners[c] / 3) +
-                                    " both go from vertex " + std::to_string(a) + " to vertex " + std::to_string(b) +
-                                    ": their orientations disagree, or more than two triangles share the edge "
-                                    "(CGAL::Polygon_mesh_processing::orient_polygon_soup() repairs both)");
-    for(Index c = begin[b]; c < begin[b + 1]; ++c)
-      if(target(corners[c]) == a)
-        opposite[h] = corners[c];
-  }
-  return unfold_triangles(std::move(xyz), std::move(corner_vertex), std::move(opposite), out);
+  return unfold_triangles(std::move(xyz), std::move(corner_vertex), std::vector<Index>(), out);
 }
 
 } // namespace internal
