@@ -256,39 +256,17 @@ struct Run
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// A valid triangle soup goes to the solver as it is. Any other soup (polygons, inconsistent
-// orientations, edges of more than two faces, vertices where several fans meet, or input the
-// solver refuses) takes the path of repairs through a Surface_mesh, which accepts, repairs or
-// refuses it as before, and goes to the solver as the mesh's triangles. Either way the solver keeps
-// what it needs, so the soup is gone before the propagation: the peak memory is the larger of
-// input + solver and solver + propagation, not their sum.
+// The solver keeps what it needs, so the soup is gone before the propagation: the peak memory is
+// the larger of input + solver and solver + propagation, not their sum.
 template <class Kernel>
 Run compute(dggvtp::Loaded_soup& soup, const Options& options)
 {
   using Solver = CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Kernel>;
   Run run;
   std::optional<Solver> solver;
-  Clock::time_point t0 = Clock::now();
-  if(soup.polygons.empty())
-  {
-    try
-    {
-      solver.emplace(dggvtp::make_soup_solver<Solver>(soup));
-      if(solver->number_of_non_manifold_vertices() > 0)
-        solver.reset();
-    }
-    catch(const std::invalid_argument&)
-    {
-    }
-  }
-  if(!solver)
-  {
-    dggvtp::repair_into_triangles<Kernel>(soup);
-    run.seconds_make_mesh = seconds_since(t0);
-    t0 = Clock::now();
-    solver.emplace(dggvtp::make_soup_solver<Solver>(soup));
-  }
-  run.seconds_prepare = seconds_since(t0);
+  const Clock::time_point t0 = Clock::now();
+  run.seconds_make_mesh = dggvtp::make_solver(soup, solver);
+  run.seconds_prepare = seconds_since(t0) - run.seconds_make_mesh;
   run.faces = soup.triangles.size();
   dggvtp::release_soup(soup);
 

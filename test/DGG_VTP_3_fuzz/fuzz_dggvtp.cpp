@@ -35,6 +35,7 @@
 #include <cstdlib>
 #include <exception>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,24 +48,23 @@ namespace {
   std::abort();
 }
 
+template <class Kernel>
+using Solver = CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Kernel>;
+
 // distances per file vertex, the smallest over the copies that loading made (as dggvtp does)
 template <class Kernel>
-std::vector<double> file_distances(const dggvtp::Loaded_soup& soup,
-                                   const CGAL::Surface_mesh<typename Kernel::Point_3>& mesh,
-                                   const CGAL::DGG_VTP_3::Geodesic_distance_solver<
-                                     CGAL::Surface_mesh<typename Kernel::Point_3>>& solver,
+std::vector<double> file_distances(const dggvtp::Loaded_soup& soup, const Solver<Kernel>& solver,
                                    std::size_t source, double accuracy)
 {
-  using Mesh = CGAL::Surface_mesh<typename Kernel::Point_3>;
-  std::vector<typename Kernel::FT> d(num_vertices(mesh));
-  solver.compute_distances_to_nearest_source(dggvtp::mesh_vertices_of<typename Mesh::Vertex_index>(soup, source),
-                                             CGAL::make_property_map(d), CGAL::parameters::accuracy(accuracy));
+  std::vector<typename Kernel::FT> d(solver.number_of_vertices());
+  solver.compute_distances_to_nearest_source(dggvtp::solver_vertices_of(soup, source), CGAL::make_property_map(d),
+                                             CGAL::parameters::accuracy(accuracy));
   for(std::size_t i = 0; i < d.size(); ++i)
   {
     if(std::isnan(double(d[i])))
-      fail("NaN distance at mesh vertex " + std::to_string(i) + " (accuracy " + std::to_string(accuracy) + ")");
+      fail("NaN distance at solver vertex " + std::to_string(i) + " (accuracy " + std::to_string(accuracy) + ")");
     if(d[i] < 0)
-      fail("negative distance at mesh vertex " + std::to_string(i));
+      fail("negative distance at solver vertex " + std::to_string(i));
   }
   const std::vector<double> out = dggvtp::file_vertex_distances(soup, d);
   if(out[source] != 0.)
@@ -75,11 +75,10 @@ std::vector<double> file_distances(const dggvtp::Loaded_soup& soup,
 template <class Kernel>
 void run(dggvtp::Loaded_soup& soup, std::size_t source)
 {
-  using Mesh = CGAL::Surface_mesh<typename Kernel::Point_3>;
-  const Mesh mesh = dggvtp::make_triangle_mesh<Kernel>(soup);
-  const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
-  const std::vector<double> exact = file_distances<Kernel>(soup, mesh, solver, source, 0.);
-  const std::vector<double> approx = file_distances<Kernel>(soup, mesh, solver, source, 1e-4);
+  std::optional<Solver<Kernel>> solver;
+  dggvtp::make_solver(soup, solver);
+  const std::vector<double> exact = file_distances<Kernel>(soup, *solver, source, 0.);
+  const std::vector<double> approx = file_distances<Kernel>(soup, *solver, source, 1e-4);
   static const bool check_contract = [] {
     const char* e = std::getenv("DGG_VTP_3_FUZZ_CONTRACT");
     return e != nullptr && std::string(e) == "1";

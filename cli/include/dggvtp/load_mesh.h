@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <chrono>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -24,6 +25,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -884,6 +886,35 @@ void repair_into_triangles(Loaded_soup& soup)
     soup.triangles.push_back({std::uint32_t(source(h, mesh)), std::uint32_t(target(h, mesh)),
                               std::uint32_t(target(next(h, mesh), mesh))});
   }
+}
+
+// Builds the solver (a Triangle_soup_geodesic_distance_solver) of the soup into `solver`. A valid
+// triangle soup goes to the solver as it is. Any other soup (polygons, inconsistent orientations,
+// edges of more than two faces, vertices where several fans meet, or input the solver refuses)
+// takes the path of repairs through a Surface_mesh, which accepts, repairs or refuses it, and goes
+// to the solver as the mesh's triangles. Returns the seconds spent on repairs (part of loading,
+// not of preparing). Throws Input_error or std::invalid_argument for input it refuses.
+template <class Solver>
+double make_solver(Loaded_soup& soup, std::optional<Solver>& solver)
+{
+  if(soup.polygons.empty())
+  {
+    try
+    {
+      solver.emplace(make_soup_solver<Solver>(soup));
+      if(solver->number_of_non_manifold_vertices() == 0)
+        return 0.;
+      solver.reset();
+    }
+    catch(const std::invalid_argument&)
+    {
+    }
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  repair_into_triangles<typename Solver::Traits>(soup);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  solver.emplace(make_soup_solver<Solver>(soup));
+  return seconds;
 }
 
 // The solver's vertices that stand for the file vertex `file_vertex`: the vertex itself and the
