@@ -565,6 +565,8 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
   const Clock::time_point t0 = Clock::now();
   const Query_places<Solver, Element> q = query_places<Solver, Element>(soup, options);
   run.seconds_locate = seconds_since(t0);
+  if(q.sources.empty()) // the library refuses a query without sources, rightly: nothing to propagate
+    throw dggvtp::Input_error("every source is a vertex that no face uses: no point of the surface can be reached");
   std::vector<Point_3> points;
   std::vector<Triangle> triangles;
   if(!options.path_targets.empty())
@@ -768,7 +770,8 @@ void write_labels(const std::vector<long long>& labels, const std::string& path,
     write_values(path, std::string(), labels, put_label_line);
 }
 
-std::string distance_text(double d)
+// a number as the distances are written (%.17g, inf)
+std::string number_text(double d)
 {
   char line[32];
   return std::string(line, put_distance_line(d, line) - 1);
@@ -778,7 +781,7 @@ std::string place_text(const Place& p)
 {
   if(!p.is_point)
     return "vertex " + std::to_string(p.vertex);
-  return "point (" + distance_text(p.point[0]) + " " + distance_text(p.point[1]) + " " + distance_text(p.point[2]) + ")";
+  return "point (" + number_text(p.point[0]) + " " + number_text(p.point[1]) + " " + number_text(p.point[2]) + ")";
 }
 
 // per path: a comment with its number, target and length, its points as v lines, and an l line
@@ -792,7 +795,7 @@ void write_paths(const Run& run, const Options& options)
   for(std::size_t k = 0; k < run.paths.size(); ++k)
   {
     std::fprintf(file.get(), "# path %zu: %s, length %s%s\n", k, place_text(options.path_targets[k]).c_str(),
-                 distance_text(run.path_lengths[k]).c_str(), run.paths[k].empty() ? " (unreached)" : "");
+                 number_text(run.path_lengths[k]).c_str(), run.paths[k].empty() ? " (unreached)" : "");
     for(const auto& x : run.paths[k])
     {
       char line[96];
@@ -889,7 +892,7 @@ int run_main(int argc, char** argv)
   std::string lines; // the targets' distances, then the paths' lengths
   for(const auto* values : {&run.target_distances, &run.path_lengths})
     for(double d : *values)
-      lines += distance_text(d) + "\n";
+      lines += number_text(d) + "\n";
   if(!lines.empty())
   {
     std::fwrite(lines.data(), 1, lines.size(), stdout);
@@ -921,7 +924,7 @@ int run_main(int argc, char** argv)
                  json_string(options.mesh).c_str(), soup.file_vertices, run.faces,
                  first.is_point ? "null" : std::to_string(first.vertex).c_str(), options.sources.size(),
                  options.targets.size(), options.path_targets.size(),
-                 std::isfinite(options.max_distance) ? distance_text(options.max_distance).c_str() : "null",
+                 std::isfinite(options.max_distance) ? number_text(options.max_distance).c_str() : "null",
                  options.epsilon, options.precision.c_str(), options.threads, seconds_load, run.seconds_prepare,
                  run.seconds_locate, run.seconds_propagate, seconds_write, s.windows_created, s.windows_peak,
                  s.pseudo_sources, s.vertices_popped, s.vertices_reached, farthest, rss);

@@ -684,7 +684,9 @@ PY
       [[ "$err" == *"out of range"* ]] || fail "$args: $err"
     done
     printf 'OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n' | input v.off   # no face to place a point on
-    run "$work/v.off" --source-point 0 0 0 --output "$work/d.txt"; expect_input_error ;;
+    run "$work/v.off" --source-point 0 0 0 --output "$work/d.txt"; expect_input_error
+    # points, but the only source a vertex no face uses
+    run "$data/two_components_and_isolated_vertex.off" --source 3 --target-point 0.2 0.2 0; expect_input_error ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"
