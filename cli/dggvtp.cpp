@@ -3,13 +3,17 @@
 //
 // Author(s): DGG-VTP for CGAL team
 
-// dggvtp: geodesic distances from one vertex of a mesh file to all its vertices, exact (VTP) or
-// accuracy-controlled (DGG-VTP). The command-line contract is documented in README.md and in
-// `dggvtp --help`; scripts depend on it.
+// dggvtp: geodesic distances from vertices or points of a mesh file's surface to all its vertices
+// or to chosen targets, and shortest paths, exact (VTP) or accuracy-controlled (DGG-VTP). The
+// command-line contract is documented in README.md and in `dggvtp --help`; scripts depend on it.
 
 #include <dggvtp/load_mesh.h>
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/DGG_VTP_3.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <sys/resource.h>
@@ -21,6 +25,7 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <array>
 #include <charconv>
 #include <cerrno>
 #include <chrono>
@@ -34,16 +39,33 @@
 #include <new>
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace {
 
 const char* const usage_text = R"(usage: dggvtp MESH [options]
 
-Geodesic distances on the surface of a triangle mesh, from one vertex to every vertex.
+Geodesic distances on the surface of a triangle mesh, from the nearest of one or several sources
+(vertices or points of the surface) to every vertex or to chosen targets, and shortest paths.
 
   MESH                   a mesh file CGAL reads: OFF, OBJ, PLY, STL
-  --source N             0-based index of the source vertex in the file's order (default 0)
+  --source N             a source at vertex N (0-based, in the file's order); repeatable: the
+                         distance to the nearest source (default: vertex 0, if no source is given)
+  --source-point X Y Z   a source at the point of the surface nearest to (X, Y, Z); repeatable,
+                         and mixes with --source
+  --target N             print the distance of vertex N, or of the surface point nearest to
+  --target-point X Y Z   (X, Y, Z), on standard output, one line per target in the order given;
+                         repeatable; the propagation stops once the targets' distances are final
+  --path-to N            trace the shortest path from vertex N, or from the surface point nearest
+  --path-to-point X Y Z  to (X, Y, Z), back to its nearest source and print its length on standard
+                         output (one line per path in the order given, after the targets' lines);
+                         repeatable; the propagation stops as for --target
+  --paths FILE           write the paths of --path-to into an OBJ file: per path a comment, its
+                         points as v lines from the target to the source, and one l line
+  --max-distance D       stop the propagation at distance D >= 0 (inf allowed): vertices, targets
+                         and paths farther away are unreached (inf)
   --exact                exact distances (VTP algorithm); the default
   --epsilon E            DGG-VTP with accuracy E >= 0: every distance within a relative error E
                          of the exact one (E = 0 is --exact)
@@ -53,21 +75,35 @@ Geodesic distances on the surface of a triangle mesh, from one vertex to every v
   --output FILE          one line per vertex of the file, in the file's order: the distance
                          printed with %.17g, or inf if no path on the surface reaches it;
                          '-' writes to standard output
+  --labels FILE          one line per vertex of the file, in the file's order: its nearest source,
+                         the 0-based number of its --source or --source-point option in the order
+                         given, or -1 if no source reaches it; '-' writes to standard output
+  --output-format F      text (the default) or npy: --output and --labels as NumPy .npy files
+                         (format version 1.0, shape (vertices of the file,)): the distances as
+                         little-endian float64 '<f8' (inf if unreached), the labels as '<i8'
   --stats FILE           one JSON object: sizes, times, window counts, peak memory
   --quiet                no summary, no warnings
   --help                 this text
 
+Targets and paths stop the propagation before the other vertices are final, so --target and
+--path-to do not combine with --output and --labels (ask for those in another run). Distances
+and paths are printed with %.17g, or inf for unreached ones. A point is taken at the nearest
+point of the surface (CGAL::Polygon_mesh_processing::locate), so it may lie off the surface. Only
+one output may go to standard output; the summary then goes to standard error.
+
 Input policy: polygons are triangulated and inconsistent orientations are fixed, splitting
 vertices where needed; a vertex where separate fans of faces meet is kept, and paths may pass
 through it (a warning on stderr reports each of these); distances are still reported per vertex
-of the file, the smallest over the copies of a split vertex. Vertices no face uses, and vertices of other
-connected components than the source's, are unreachable: inf. An unreadable or empty file, a
+of the file, the smallest over the copies of a split vertex (a source or target vertex is one on
+all its copies). Vertices no face uses, and vertices of other
+connected components than the sources', are unreachable: inf. An unreadable or empty file, a
 non-finite coordinate, a face with fewer than 3 or repeated vertices, a degenerate face (zero
 length edge or zero area), a sliver (an edge more than 1e10 times longer than the height on it),
 the tip of a cone sharper than 1e-4 radians (windows would wrap around those for hours), a polygon that cannot be triangulated (it touches or crosses itself)
-or an out-of-range source is an error: one line on stderr starting with 'error:', exit status 2,
+or an out-of-range vertex is an error: one line on stderr starting with 'error:', exit status 2,
 and no output file; so are OFF files with texture coordinates (STOFF), binary OFF with colours,
-and skeletons (SKEL), which CGAL's reader cannot read safely. Bad usage: exit status 1.
+and skeletons (SKEL), which CGAL's reader cannot read safely. Bad usage, including an option
+value out of its range (a negative --max-distance, a coordinate that is not finite): exit status 1.
 )";
 
 struct Usage_error : std::runtime_error
@@ -75,16 +111,41 @@ struct Usage_error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
+// A vertex of the file or a 3D point, as --source, --target and --path-to give them
+struct Place
+{
+  bool is_point = false;
+  std::size_t vertex = 0;       // 0-based, in the file's order
+  std::array<double, 3> point{}; // located at the nearest point of the surface
+};
+
 struct Options
 {
   std::string mesh;
-  std::size_t source = 0;
+  std::vector<Place> sources;   // in the order given: a label is a number in it
+  std::vector<Place> targets;
+  std::vector<Place> path_targets;
+  double max_distance = std::numeric_limits<double>::infinity();
   double epsilon = 0.;
   std::string precision = "double";
   long threads = 1;
   std::string output;
+  std::string labels;
+  std::string output_format = "text";
+  std::string paths;
   std::string stats;
   bool quiet = false;
+
+  // targets and paths end the propagation early
+  bool stops_early() const { return !targets.empty() || !path_targets.empty(); }
+  bool has_points() const
+  {
+    for(const auto* places : {&sources, &targets, &path_targets})
+      for(const Place& p : *places)
+        if(p.is_point)
+          return true;
+    return false;
+  }
 };
 
 template <class T>
@@ -107,6 +168,9 @@ Options parse_options(int argc, char** argv)
 {
   Options options;
   bool exact = false, epsilon = false;
+  const auto places_of = [&](const std::string& option) -> std::vector<Place>& {
+    return option == "--source" ? options.sources : option == "--target" ? options.targets : options.path_targets;
+  };
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -120,8 +184,36 @@ Options parse_options(int argc, char** argv)
       std::cout << usage_text;
       std::exit(0);
     }
-    else if(arg == "--source")
-      options.source = parse_number<std::size_t>(arg, value());
+    else if(arg == "--source" || arg == "--target" || arg == "--path-to")
+    {
+      Place place;
+      place.vertex = parse_number<std::size_t>(arg, value());
+      places_of(arg).push_back(place);
+    }
+    else if(arg == "--source-point" || arg == "--target-point" || arg == "--path-to-point")
+    {
+      Place place;
+      place.is_point = true;
+      for(double& c : place.point)
+      {
+        c = parse_number<double>(arg, value());
+        if(!std::isfinite(c))
+          throw Usage_error(arg + " needs finite coordinates");
+      }
+      places_of(arg.substr(0, arg.size() - std::strlen("-point"))).push_back(place);
+    }
+    else if(arg == "--max-distance")
+    {
+      options.max_distance = parse_number<double>(arg, value());
+      if(!(options.max_distance >= 0.))
+        throw Usage_error("--max-distance must be a number >= 0 (inf allowed)");
+    }
+    else if(arg == "--output-format")
+    {
+      options.output_format = value();
+      if(options.output_format != "text" && options.output_format != "npy")
+        throw Usage_error("--output-format must be text or npy");
+    }
     else if(arg == "--exact")
       exact = true;
     else if(arg == "--epsilon")
@@ -139,10 +231,13 @@ Options parse_options(int argc, char** argv)
     }
     else if(arg == "--threads")
       options.threads = long(parse_number<std::size_t>(arg, value()));
-    else if(arg == "--output" || arg == "--stats")
+    else if(arg == "--output" || arg == "--stats" || arg == "--labels" || arg == "--paths")
     {
-      (arg == "--output" ? options.output : options.stats) = value();
-      if((arg == "--output" ? options.output : options.stats).empty())
+      std::string& file = arg == "--output" ? options.output
+                        : arg == "--stats"  ? options.stats
+                        : arg == "--labels" ? options.labels : options.paths;
+      file = value();
+      if(file.empty())
         throw Usage_error(arg + " needs a file name ('-' for standard output)");
     }
     else if(arg == "--quiet")
@@ -158,6 +253,16 @@ Options parse_options(int argc, char** argv)
     throw Usage_error("no MESH given");
   if(exact && epsilon && options.epsilon > 0.)
     throw Usage_error("--exact and --epsilon E > 0 contradict each other");
+  if(options.sources.empty())
+    options.sources.push_back(Place());
+  if(options.stops_early() && !(options.output.empty() && options.labels.empty()))
+    throw Usage_error("--target and --path-to stop the propagation before every vertex is final: "
+                      "--output and --labels need another run");
+  if(!options.paths.empty() && options.path_targets.empty())
+    throw Usage_error("--paths needs --path-to or --path-to-point");
+  if(int(options.output == "-") + int(options.labels == "-") + int(options.paths == "-") +
+       int(options.stops_early()) > 1)
+    throw Usage_error("only one output may go to standard output (the targets' and paths' lines are one)");
   return options;
 }
 
@@ -244,20 +349,316 @@ private:
   FILE* m_file = nullptr;
 };
 
+using Point_3 = dggvtp::Loaded_soup::Point;
+using Triangle = std::array<std::uint32_t, 3>;
+using Polyline = std::vector<std::array<double, 3>>;
+
 struct Run
 {
   std::size_t faces = 0;
   double seconds_make_mesh = 0.; // soup to mesh, with repairs: part of loading
-  double seconds_prepare = 0., seconds_propagate = 0.;
+  double seconds_prepare = 0., seconds_locate = 0., seconds_propagate = 0.;
   CGAL::DGG_VTP_3::Propagation_statistics statistics;
-  std::vector<double> distances; // per file vertex
+  std::vector<double> distances;        // per file vertex, unless the propagation stopped early
+  std::vector<long long> labels;        // per file vertex, with --labels: its nearest source's option, or -1
+  std::vector<double> target_distances; // per --target
+  std::vector<double> path_lengths;     // per --path-to
+  std::vector<Polyline> paths;          // per --path-to: from the target to the source; empty if unreached
 };
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The solver keeps what it needs, so the soup is gone before the propagation: the peak memory is
-// the larger of input + solver and solver + propagation, not their sum.
+// The nearest surface points to 3D points, by CGAL::Polygon_mesh_processing::locate_with_AABB_tree()
+// on a Surface_mesh of the solver's triangles (its face f is triangle f, its vertex i point i),
+// built only when a point is given: a run without points keeps its time and memory.
+class Point_locator
+{
+  using Mesh = CGAL::Surface_mesh<Point_3>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<CGAL::Exact_predicates_inexact_constructions_kernel,
+                                                 CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+
+public:
+  Point_locator(const std::vector<Point_3>& points, const std::vector<Triangle>& triangles)
+    : m_points(points), m_triangles(triangles)
+  {
+    if(triangles.empty())
+      throw dggvtp::Input_error("the mesh has no face to place a point on");
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, m_mesh);
+    if(num_faces(m_mesh) != triangles.size() || num_vertices(m_mesh) != points.size())
+      throw std::logic_error("the solver's triangles do not make a Surface_mesh");
+    CGAL::Polygon_mesh_processing::build_AABB_tree(m_mesh, m_tree);
+  }
+
+  // the triangle and the barycentric coordinates of its corners, in the triangle's order (the
+  // order of the soup solver's Face_location)
+  std::pair<std::size_t, std::array<double, 3>> locate(const std::array<double, 3>& p) const
+  {
+    const Point_3 query(p[0], p[1], p[2]);
+    const auto location = CGAL::Polygon_mesh_processing::locate_with_AABB_tree(query, m_tree, m_mesh);
+    const std::size_t f = std::size_t(location.first);
+    const auto h = halfedge(location.first, m_mesh);
+    const Mesh::Vertex_index corners[3] = {source(h, m_mesh), target(h, m_mesh), target(next(h, m_mesh), m_mesh)};
+    std::array<double, 3> barycentric{};
+    for(int k = 0; k < 3; ++k)
+      for(int j = 0; j < 3; ++j)
+        if(m_triangles[f][j] == std::size_t(corners[k]))
+          barycentric[j] = location.second[k];
+    // a point at a corner is that vertex: the closest point to it, a construction, may be a
+    // rounding error away (then it would be a source or target inside the face, next to the vertex)
+    for(int j = 0; j < 3; ++j)
+      if(m_points[m_triangles[f][j]] == query)
+        barycentric = {double(j == 0), double(j == 1), double(j == 2)};
+    return {f, barycentric};
+  }
+
+private:
+  const std::vector<Point_3>& m_points;
+  const std::vector<Triangle>& m_triangles;
+  Mesh m_mesh;
+  Tree m_tree;
+};
+
+// The options' places in the solver's numbering, as ranges of Element: solver vertices, or the
+// solver's Face_locations when a point is given (a range holds one type; a vertex is then the
+// corner of one of its triangles, the same source or target bit for bit). A vertex of the file is
+// a source or target on each of its copies.
+template <class Solver, class Element>
+struct Query_places
+{
+  static constexpr std::size_t no_point = std::size_t(-1);
+  // where the target of a --target or --path-to option is: copies of a file vertex, or a point
+  struct Target
+  {
+    std::vector<std::size_t> vertices;
+    std::size_t point = no_point; // its number among the query's targets
+  };
+
+  std::vector<Element> sources;
+  std::vector<std::size_t> source_option; // per source: the number of its option
+  // the source vertices that no triangle uses (no location names them), with their option's number
+  std::vector<std::pair<std::size_t, std::size_t>> isolated_sources;
+  std::vector<Element> targets;           // the query's: those of --target, then of --path-to
+  std::vector<Target> target_places, path_places; // per option
+};
+
+// Locates the points on the soup's triangles, so before they are released.
+template <class Solver, class Element>
+Query_places<Solver, Element> query_places(const dggvtp::Loaded_soup& soup, const Options& options)
+{
+  using FT = typename Solver::FT;
+  using Places = Query_places<Solver, Element>;
+  constexpr bool by_location = !std::is_same<Element, std::size_t>::value;
+  Places q;
+  std::optional<Point_locator> locator;
+  const std::size_t no_corner = std::size_t(-1);
+  std::vector<std::size_t> corner; // per solver vertex, in locations: a corner (3 f + k) at it
+  if constexpr(by_location)
+  {
+    locator.emplace(soup.points, soup.triangles);
+    corner.assign(soup.file_vertex_of.size(), no_corner);
+    for(std::size_t f = 0; f < soup.triangles.size(); ++f)
+      for(std::size_t k = 0; k < 3; ++k)
+        corner[soup.triangles[f][k]] = 3 * f + k;
+  }
+  // false for a vertex that no location names
+  const auto add_vertex = [&](std::size_t v, std::vector<Element>& range) {
+    if constexpr(by_location)
+    {
+      if(corner[v] == no_corner)
+        return false;
+      Element e(corner[v] / 3, {FT(0), FT(0), FT(0)});
+      e.second[corner[v] % 3] = FT(1);
+      range.push_back(e);
+    }
+    else
+      range.push_back(v);
+    return true;
+  };
+  const auto add_point = [&](const Place& p, std::vector<Element>& range) {
+    if constexpr(by_location)
+    {
+      const auto l = locator->locate(p.point);
+      range.emplace_back(l.first, std::array<FT, 3>{FT(l.second[0]), FT(l.second[1]), FT(l.second[2])});
+    }
+  };
+
+  for(std::size_t option = 0; option < options.sources.size(); ++option)
+  {
+    const Place& p = options.sources[option];
+    if(p.is_point)
+    {
+      add_point(p, q.sources);
+      q.source_option.push_back(option);
+    }
+    else
+      for(std::size_t v : dggvtp::solver_vertices_of(soup, p.vertex))
+      {
+        if(add_vertex(v, q.sources))
+          q.source_option.push_back(option);
+        else
+          q.isolated_sources.emplace_back(v, option);
+      }
+  }
+  for(const auto& [places, out] : {std::make_pair(&options.targets, &q.target_places),
+                                   std::make_pair(&options.path_targets, &q.path_places)})
+    for(const Place& p : *places)
+    {
+      typename Places::Target t;
+      if(p.is_point)
+      {
+        t.point = q.targets.size();
+        add_point(p, q.targets);
+      }
+      else
+      {
+        // an unused vertex needs no waiting for: it is unreached, or a source
+        t.vertices = dggvtp::solver_vertices_of(soup, p.vertex);
+        for(std::size_t v : t.vertices)
+          add_vertex(v, q.targets);
+      }
+      out->push_back(t);
+    }
+  return q;
+}
+
+// Per file vertex, the label (given per solver vertex) of its copy nearest to the sources, the
+// copy whose distance file_vertex_distances() reports; -1 where unreached.
+template <class FT>
+std::vector<long long> file_vertex_labels(const dggvtp::Loaded_soup& soup, const std::vector<FT>& d,
+                                          const std::vector<long long>& label)
+{
+  std::vector<long long> out(soup.file_vertices, -1);
+  std::vector<FT> best(soup.file_vertices, std::numeric_limits<FT>::infinity());
+  for(std::size_t v = 0; v < d.size(); ++v)
+  {
+    const std::size_t f = soup.file_vertex_of[v];
+    if(d[v] < best[f])
+    {
+      best[f] = d[v];
+      out[f] = label[v];
+    }
+  }
+  return out;
+}
+
+// the copy of a target's file vertex nearest to the sources
+template <class FT>
+std::size_t nearest_copy(const std::vector<std::size_t>& copies, const std::vector<FT>& d)
+{
+  std::size_t best = copies.front();
+  for(std::size_t v : copies)
+    if(d[v] < d[best])
+      best = v;
+  return best;
+}
+
+// The query of the options, on the places' range type. The solver keeps what it needs, so the
+// soup is gone before the propagation: the peak memory is the larger of input + solver and
+// solver + propagation, not their sum (paths keep the soup's points and triangles, to draw them).
+template <class Element, class Solver>
+void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& options, Run& run)
+{
+  using FT = typename Solver::FT;
+  using Tag = CGAL::Parallel_if_available_tag;
+  namespace DP = CGAL::DGG_VTP_3::parameters;
+  const Clock::time_point t0 = Clock::now();
+  const Query_places<Solver, Element> q = query_places<Solver, Element>(soup, options);
+  run.seconds_locate = seconds_since(t0);
+  if(q.sources.empty()) // the library refuses a query without sources, rightly: nothing to propagate
+    throw dggvtp::Input_error("every source is a vertex that no face uses: no point of the surface can be reached");
+  std::vector<Point_3> points;
+  std::vector<Triangle> triangles;
+  if(!options.path_targets.empty())
+  {
+    points.swap(soup.points);
+    triangles.swap(soup.triangles);
+  }
+  dggvtp::release_soup(soup);
+
+  std::vector<FT> d(solver.number_of_vertices());
+  std::vector<std::size_t> nearest(options.labels.empty() ? 0 : d.size());
+  std::vector<FT> at_targets;
+  using Tree = decltype(solver.compute_shortest_path_tree(q.sources));
+  std::optional<Tree> tree;
+  const auto np = DP::max_distance(options.max_distance).accuracy(options.epsilon);
+  const Clock::time_point t1 = Clock::now();
+  // the distances are the same bit for bit on any number of threads (and without TBB)
+#ifdef CGAL_LINKED_WITH_TBB
+  std::optional<tbb::global_control> limit;
+  if(options.threads > 0)
+    limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
+#endif
+  if(!options.path_targets.empty())
+  {
+    tree.emplace(solver.template compute_shortest_path_tree<Tag>(q.sources, DP::targets(q.targets, np)));
+    run.statistics = tree->statistics();
+    for(std::size_t v = 0; v < d.size(); ++v)
+      d[v] = tree->distance(v);
+    for(std::size_t k = 0; k < q.targets.size(); ++k)
+      at_targets.push_back(tree->target_distance(k));
+  }
+  else if(!options.targets.empty())
+    run.statistics = solver.template compute_distances_to_nearest_source<Tag>(
+      q.sources, CGAL::make_property_map(d), DP::target_distances(std::back_inserter(at_targets), DP::targets(q.targets, np)));
+  else if(!options.labels.empty())
+    run.statistics = solver.template compute_distances_to_nearest_source<Tag>(
+      q.sources, CGAL::make_property_map(d), DP::nearest_source_map(CGAL::make_property_map(nearest), np));
+  else
+    run.statistics = solver.template compute_distances_to_nearest_source<Tag>(q.sources, CGAL::make_property_map(d), np);
+  run.seconds_propagate = seconds_since(t1);
+
+  std::vector<long long> label(nearest.size(), -1); // per solver vertex
+  for(std::size_t v = 0; v < nearest.size(); ++v)
+    if(nearest[v] != std::size_t(-1))
+      label[v] = static_cast<long long>(q.source_option[nearest[v]]);
+  for(const auto& [v, option] : q.isolated_sources)
+  {
+    d[v] = FT(0);
+    if(!label.empty())
+      label[v] = static_cast<long long>(option);
+  }
+
+  const auto target_distance = [&](const auto& t) {
+    return double(t.vertices.empty() ? at_targets[t.point] : d[nearest_copy(t.vertices, d)]);
+  };
+  for(const auto& t : q.target_places)
+    run.target_distances.push_back(target_distance(t));
+  for(const auto& t : q.path_places)
+  {
+    using Path_point = typename Tree::Path_point;
+    std::vector<Path_point> path;
+    if(t.vertices.empty())
+      tree->shortest_path_to_target(t.point, std::back_inserter(path));
+    else
+      tree->shortest_path(nearest_copy(t.vertices, d), std::back_inserter(path));
+    Polyline line;
+    double length = path.empty() ? std::numeric_limits<double>::infinity() : 0.;
+    for(const Path_point& p : path)
+    {
+      std::array<double, 3> x{0., 0., 0.};
+      for(int k = 0; k < 3; ++k)
+        for(int c = 0; c < 3; ++c)
+          x[c] += double(p.location.second[k]) * points[triangles[p.location.first][k]][c];
+      if(!line.empty())
+        length += std::sqrt(CGAL::square(x[0] - line.back()[0]) + CGAL::square(x[1] - line.back()[1]) +
+                            CGAL::square(x[2] - line.back()[2]));
+      line.push_back(x);
+    }
+    run.path_lengths.push_back(length);
+    run.paths.push_back(std::move(line));
+  }
+
+  if(!options.stops_early())
+  {
+    run.distances = dggvtp::file_vertex_distances(soup, d);
+    if(!label.empty())
+      run.labels = file_vertex_labels(soup, d, label);
+  }
+}
+
+// The solver is built from the soup; vertices are sources and targets as vertices unless a point
+// is given.
 template <class Kernel>
 Run compute(dggvtp::Loaded_soup& soup, const Options& options)
 {
@@ -268,21 +669,10 @@ Run compute(dggvtp::Loaded_soup& soup, const Options& options)
   run.seconds_make_mesh = dggvtp::make_solver(soup, solver);
   run.seconds_prepare = seconds_since(t0) - run.seconds_make_mesh;
   run.faces = soup.triangles.size();
-  dggvtp::release_soup(soup);
-
-  std::vector<typename Solver::FT> d(solver->number_of_vertices());
-  const Clock::time_point t1 = Clock::now();
-  // the distances are the same bit for bit on any number of threads (and without TBB)
-#ifdef CGAL_LINKED_WITH_TBB
-  std::optional<tbb::global_control> limit;
-  if(options.threads > 0)
-    limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
-#endif
-  run.statistics = solver->template compute_distances_to_nearest_source<CGAL::Parallel_if_available_tag>(
-    dggvtp::solver_vertices_of(soup, options.source), CGAL::make_property_map(d),
-    CGAL::parameters::accuracy(options.epsilon));
-  run.seconds_propagate = seconds_since(t1);
-  run.distances = dggvtp::file_vertex_distances(soup, d);
+  if(options.has_points())
+    run_query<typename Solver::Face_location>(soup, *solver, options, run);
+  else
+    run_query<std::size_t>(soup, *solver, options, run);
   return run;
 }
 
@@ -293,28 +683,141 @@ double peak_rss_mb()
   return double(usage.ru_maxrss) / 1024.;
 }
 
-// The text of printf's "%.17g\n" (and "inf\n"), formatted with std::to_chars into large blocks:
-// printf per line took most of the writing time.
-void write_distances(const std::vector<double>& distances, const std::string& path)
+// "%.17g\n" as printf writes it (and "inf\n"), with std::to_chars: printf per line took most of
+// the writing time. At most 25 characters ("-1.2345678901234567e-308\n").
+char* put_distance_line(double d, char* out)
+{
+  out = std::to_chars(out, out + 24, d, std::chars_format::general, 17).ptr;
+  *out++ = '\n';
+  return out;
+}
+
+char* put_label_line(long long label, char* out)
+{
+  out = std::to_chars(out, out + 20, label).ptr;
+  *out++ = '\n';
+  return out;
+}
+
+// 8 bytes, little-endian whatever the machine's order
+template <class T>
+char* put_little_endian(T value, char* out)
+{
+  static_assert(sizeof(T) == 8, "8-byte values");
+  std::uint64_t bits;
+  std::memcpy(&bits, &value, 8);
+  for(int i = 0; i < 8; ++i)
+    *out++ = char((bits >> (8 * i)) & 0xff);
+  return out;
+}
+
+// The header of a NumPy .npy file, format version 1.0, of a one-dimensional array of `count`
+// values of type `descr`: the magic string, the version, the length of the header's dictionary
+// (little-endian), and the dictionary padded with spaces and ended by a newline so that the data
+// starts at a multiple of 64 bytes.
+std::string npy_header(const char* descr, std::size_t count)
+{
+  std::string dictionary =
+    std::string("{'descr': '") + descr + "', 'fortran_order': False, 'shape': (" + std::to_string(count) + ",), }";
+  const std::size_t preamble = 10; // magic (6 bytes), version (2), header length (2)
+  dictionary.append((64 - (preamble + dictionary.size() + 1) % 64) % 64, ' ');
+  dictionary += '\n';
+  std::string header("\x93" "NUMPY\x01\x00", 8);
+  header += char(dictionary.size() & 0xff);
+  header += char(dictionary.size() >> 8);
+  return header + dictionary;
+}
+
+// Writes `header`, then each value formatted by `put` (at most 32 bytes), through an Output_file
+// in blocks of 1 MB.
+template <class T, class Put>
+void write_values(const std::string& path, const std::string& header, const std::vector<T>& values, Put put)
 {
   Output_file file(path);
   std::vector<char> block(1 << 20);
-  const std::size_t longest_line = 32; // "-1.2345678901234567e-308\n" is 25
+  const std::size_t longest = 32;
   std::size_t used = 0;
   const auto flush = [&] {
     if(std::fwrite(block.data(), 1, used, file.get()) != used)
       throw dggvtp::Input_error("cannot write '" + path + "'");
     used = 0;
   };
-  for(double d : distances)
+  if(std::fwrite(header.data(), 1, header.size(), file.get()) != header.size())
+    throw dggvtp::Input_error("cannot write '" + path + "'");
+  for(const T& value : values)
   {
-    if(block.size() - used < longest_line)
+    if(block.size() - used < longest)
       flush();
-    char* end = std::to_chars(block.data() + used, block.data() + block.size(), d, std::chars_format::general, 17).ptr;
-    *end++ = '\n';
-    used = std::size_t(end - block.data());
+    used = std::size_t(put(value, block.data() + used) - block.data());
   }
   flush();
+  file.commit();
+}
+
+void write_distances(const std::vector<double>& distances, const std::string& path, const std::string& format)
+{
+  if(format == "npy")
+    write_values(path, npy_header("<f8", distances.size()), distances, put_little_endian<double>);
+  else
+    write_values(path, std::string(), distances, put_distance_line);
+}
+
+void write_labels(const std::vector<long long>& labels, const std::string& path, const std::string& format)
+{
+  if(format == "npy")
+    write_values(path, npy_header("<i8", labels.size()), labels, put_little_endian<long long>);
+  else
+    write_values(path, std::string(), labels, put_label_line);
+}
+
+// a number as the distances are written (%.17g, inf)
+std::string number_text(double d)
+{
+  char line[32];
+  return std::string(line, put_distance_line(d, line) - 1);
+}
+
+std::string place_text(const Place& p)
+{
+  if(!p.is_point)
+    return "vertex " + std::to_string(p.vertex);
+  return "point (" + number_text(p.point[0]) + " " + number_text(p.point[1]) + " " + number_text(p.point[2]) + ")";
+}
+
+// per path: a comment with its number, target and length, its points as v lines, and an l line
+// through them (a path of one point, at a source, has none: an l line needs two)
+void write_paths(const Run& run, const Options& options)
+{
+  Output_file file(options.paths);
+  std::fprintf(file.get(), "# dggvtp: shortest paths on %s, from each target back to its nearest source\n",
+               options.mesh.c_str());
+  std::size_t written = 0;
+  for(std::size_t k = 0; k < run.paths.size(); ++k)
+  {
+    std::fprintf(file.get(), "# path %zu: %s, length %s%s\n", k, place_text(options.path_targets[k]).c_str(),
+                 number_text(run.path_lengths[k]).c_str(), run.paths[k].empty() ? " (unreached)" : "");
+    for(const auto& x : run.paths[k])
+    {
+      char line[96];
+      char* end = line;
+      *end++ = 'v';
+      for(double c : x)
+      {
+        *end++ = ' ';
+        end = std::to_chars(end, line + sizeof line, c, std::chars_format::general, 17).ptr;
+      }
+      *end++ = '\n';
+      std::fwrite(line, 1, std::size_t(end - line), file.get());
+    }
+    if(run.paths[k].size() >= 2)
+    {
+      std::fputc('l', file.get());
+      for(std::size_t i = 1; i <= run.paths[k].size(); ++i)
+        std::fprintf(file.get(), " %zu", written + i);
+      std::fputc('\n', file.get());
+    }
+    written += run.paths[k].size();
+  }
   file.commit();
 }
 
@@ -352,9 +855,12 @@ int run_main(int argc, char** argv)
 
   const Clock::time_point t0 = Clock::now();
   dggvtp::Loaded_soup soup = dggvtp::load_soup(options.mesh);
-  if(options.source >= soup.file_vertices)
-    throw dggvtp::Input_error("source " + std::to_string(options.source) + " is out of range (the mesh has " +
-                              std::to_string(soup.file_vertices) + " vertices)");
+  for(const auto& [places, what] : {std::make_pair(&options.sources, "source"), std::make_pair(&options.targets, "target"),
+                                    std::make_pair(&options.path_targets, "path target")})
+    for(const Place& p : *places)
+      if(!p.is_point && p.vertex >= soup.file_vertices)
+        throw dggvtp::Input_error(std::string(what) + " " + std::to_string(p.vertex) + " is out of range (the mesh has " +
+                                  std::to_string(soup.file_vertices) + " vertices)");
   const double seconds_read = seconds_since(t0);
 
   Run run;
@@ -378,46 +884,81 @@ int run_main(int argc, char** argv)
 
   const Clock::time_point t_write = Clock::now();
   if(!options.output.empty())
-    write_distances(run.distances, options.output);
+    write_distances(run.distances, options.output, options.output_format);
+  if(!options.labels.empty())
+    write_labels(run.labels, options.labels, options.output_format);
+  if(!options.paths.empty())
+    write_paths(run, options);
+  std::string lines; // the targets' distances, then the paths' lengths
+  for(const auto* values : {&run.target_distances, &run.path_lengths})
+    for(double d : *values)
+      lines += number_text(d) + "\n";
+  if(!lines.empty())
+  {
+    std::fwrite(lines.data(), 1, lines.size(), stdout);
+    if(std::fflush(stdout) != 0)
+      throw dggvtp::Input_error("cannot write to standard output");
+  }
   const double seconds_write = seconds_since(t_write);
 
+  // of what is reported: the vertices, or the targets and paths
   double farthest = 0.;
-  for(double d : run.distances)
-    if(std::isfinite(d))
-      farthest = (std::max)(farthest, d);
+  for(const auto* values : {&run.distances, &run.target_distances, &run.path_lengths})
+    for(double d : *values)
+      if(std::isfinite(d))
+        farthest = (std::max)(farthest, d);
   const double rss = peak_rss_mb();
   const auto& s = run.statistics;
   if(!options.stats.empty())
   {
     Output_file file(options.stats);
+    const Place& first = options.sources.front();
     std::fprintf(file.get(),
-                 "{\"mesh\": %s, \"vertices\": %zu, \"faces\": %zu, \"source\": %zu, \"epsilon\": %.17g, "
+                 "{\"mesh\": %s, \"vertices\": %zu, \"faces\": %zu, \"source\": %s, \"sources\": %zu, "
+                 "\"targets\": %zu, \"paths\": %zu, \"distance_limit\": %s, \"epsilon\": %.17g, "
                  "\"precision\": \"%s\", \"threads\": %ld, \"seconds_load\": %.6f, \"seconds_prepare\": %.6f, "
-                 "\"seconds_propagate\": %.6f, \"seconds_write\": %.6f, \"windows_created\": %zu, \"windows_peak\": %zu, "
+                 "\"seconds_locate\": %.6f, \"seconds_propagate\": %.6f, \"seconds_write\": %.6f, "
+                 "\"windows_created\": %zu, \"windows_peak\": %zu, "
                  "\"pseudo_sources\": %zu, \"vertices_popped\": %zu, \"vertices_reached\": %zu, "
                  "\"max_distance\": %.17g, \"peak_rss_mb\": %.1f}\n",
-                 json_string(options.mesh).c_str(), soup.file_vertices, run.faces, options.source, options.epsilon,
-                 options.precision.c_str(), options.threads, seconds_load, run.seconds_prepare,
-                 run.seconds_propagate, seconds_write, s.windows_created, s.windows_peak, s.pseudo_sources, s.vertices_popped,
-                 s.vertices_reached, farthest, rss);
+                 json_string(options.mesh).c_str(), soup.file_vertices, run.faces,
+                 first.is_point ? "null" : std::to_string(first.vertex).c_str(), options.sources.size(),
+                 options.targets.size(), options.path_targets.size(),
+                 std::isfinite(options.max_distance) ? number_text(options.max_distance).c_str() : "null",
+                 options.epsilon, options.precision.c_str(), options.threads, seconds_load, run.seconds_prepare,
+                 run.seconds_locate, run.seconds_propagate, seconds_write, s.windows_created, s.windows_peak,
+                 s.pseudo_sources, s.vertices_popped, s.vertices_reached, farthest, rss);
     file.commit();
   }
   if(!options.quiet)
   {
-    std::ostream& out = options.output == "-" ? std::cerr : std::cout;
-    std::size_t reached = 0;
-    for(double d : run.distances)
-      reached += std::isfinite(d) ? 1 : 0;
+    const bool stdout_taken = options.output == "-" || options.labels == "-" || options.stops_early();
+    std::ostream& out = stdout_taken ? std::cerr : std::cout;
+    std::string sources = options.sources.size() == 1 && !options.sources[0].is_point
+                            ? "source " + std::to_string(options.sources[0].vertex) : "sources";
+    if(sources == "sources")
+      for(std::size_t k = 0; k < options.sources.size(); ++k)
+        sources += (k == 0 ? " " : ", ") + place_text(options.sources[k]);
     out << "dggvtp: " << options.mesh << ": " << soup.file_vertices << " vertices, " << run.faces << " faces\n"
-        << "  source " << options.source << ", "
+        << "  " << sources << ", "
         << (options.epsilon > 0. ? "DGG-VTP epsilon " + std::to_string(options.epsilon) : std::string("exact (VTP)"))
         << ", " << options.precision << "\n"
-        << "  load " << seconds_load << " s, prepare " << run.seconds_prepare << " s, propagate "
-        << run.seconds_propagate << " s, write " << seconds_write << " s\n"
+        << "  load " << seconds_load << " s, prepare " << run.seconds_prepare << " s, "
+        << (options.has_points() ? "locate " + std::to_string(run.seconds_locate) + " s, " : std::string())
+        << "propagate " << run.seconds_propagate << " s, write " << seconds_write << " s\n"
         << "  windows created " << s.windows_created << ", peak " << s.windows_peak << ", pseudo-sources "
-        << s.pseudo_sources << "\n"
-        << "  reached " << reached << " of " << soup.file_vertices << " vertices, farthest at " << farthest << "\n"
-        << "  peak memory " << rss << " MB\n";
+        << s.pseudo_sources << "\n";
+    if(options.stops_early())
+      out << "  stopped once the targets were final, " << s.vertices_reached << " vertices reached, farthest target at "
+          << farthest << "\n";
+    else
+    {
+      std::size_t reached = 0;
+      for(double d : run.distances)
+        reached += std::isfinite(d) ? 1 : 0;
+      out << "  reached " << reached << " of " << soup.file_vertices << " vertices, farthest at " << farthest << "\n";
+    }
+    out << "  peak memory " << rss << " MB\n";
   }
   return 0;
 }

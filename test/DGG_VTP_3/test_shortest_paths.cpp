@@ -331,6 +331,39 @@ BOOST_AUTO_TEST_CASE(against_smsp_and_dgg_within_epsilon)
   }
 }
 
+// targets numbered in the query's order whether they are points or vertices (a location at a
+// corner is that vertex), as compute_distances() numbers its target distances; the statistics are
+// those of that query
+BOOST_AUTO_TEST_CASE(targets_mixing_vertices_and_points)
+{
+  using Mesh = CGAL::Surface_mesh<Epick::Point_3>;
+  const Mesh mesh = make_mesh<Mesh>(read_soup("pinion.ply"));
+  const Solver<Mesh> solver(mesh);
+  const std::vector<Mesh::Face_index> fs(faces(mesh).begin(), faces(mesh).end());
+  const std::vector<Location<Mesh>> sources = {Location<Mesh>(fs[5], {0.2, 0.3, 0.5})};
+  const std::vector<Location<Mesh>> targets = {Location<Mesh>(fs[300], {0.6, 0.1, 0.3}),
+                                               Location<Mesh>(fs[700], {0., 1., 0.}),
+                                               Location<Mesh>(fs[900], {0.25, 0.25, 0.5})};
+  const Tree<Mesh> tree = solver.compute_shortest_path_tree(sources, DP::targets(targets));
+  auto d = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  std::vector<double> expected;
+  const CGAL::DGG_VTP_3::Propagation_statistics statistics = solver.compute_distances_to_nearest_source(
+    sources, d, DP::target_distances(std::back_inserter(expected), DP::targets(targets)));
+  BOOST_TEST(tree.statistics().windows_created == statistics.windows_created);
+  BOOST_TEST(tree.statistics().vertices_reached == statistics.vertices_reached);
+  const Mesh::Vertex_index corner = target(halfedge(fs[700], mesh), mesh);
+  BOOST_TEST(tree.target_distance(1) == tree.distance(corner));
+  for(std::size_t k = 0; k < targets.size(); ++k)
+  {
+    BOOST_TEST(tree.target_distance(k) == expected[k]);
+    const Path<Mesh> path = path_to_target<Mesh>(tree, k);
+    BOOST_REQUIRE(path.size() >= 2);
+    BOOST_TEST(path_length(mesh, path) == expected[k], boost::test_tools::tolerance(1e-12));
+  }
+  BOOST_TEST(path_to_target<Mesh>(tree, 1).size() == path_to<Mesh>(tree, corner).size());
+  BOOST_CHECK_THROW(tree.target_distance(3), std::invalid_argument);
+}
+
 // nearest sources, distances and bad queries
 BOOST_AUTO_TEST_CASE(tree_queries)
 {

@@ -24,8 +24,9 @@ run() {
   local args=("$@") outputs=() mesh="" i
   for ((i = 0; i < ${#args[@]}; ++i)); do
     case ${args[i]} in
-      --output|--stats) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
-      --source|--epsilon|--precision|--threads) i=$((i + 1)) ;;
+      --output|--stats|--labels|--paths) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
+      --source|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads) i=$((i + 1)) ;;
+      --source-point|--target-point|--path-to-point) i=$((i + 3)) ;;
       -*) ;;
       *) [ -n "$mesh" ] || mesh=${args[i]} ;;
     esac
@@ -44,7 +45,7 @@ run() {
   for o in "${outputs[@]}"; do
     if [ "$o" = - ]; then
       ! printf '%s\n' "$out" | grep -qiw nan || fail "NaN on standard output"
-    elif [ -f "$o" ]; then
+    elif [ -f "$o" ] && [[ "$o" != *.npy ]]; then   # binary: checked by the npy cases
       ! grep -qiw nan "$o" || fail "NaN in $o"
     fi
   done
@@ -104,6 +105,39 @@ binary_stl() {
 }
 # float words
 f0=00000000 f1=3f800000 fnan=7fc00000 finf=7f800000
+
+# bumpy OFF: a 12 x 10 grid of unit squares, each cut into two triangles, over z = 0.3 sin(x) cos(y),
+# its coordinates printed with %.17g so that a point given with the same text is a vertex exactly
+bumpy() {
+  awk 'BEGIN { nx = 12; ny = 10; print "OFF"; print (nx + 1) * (ny + 1), 2 * nx * ny, 0
+    for (j = 0; j <= ny; ++j) for (i = 0; i <= nx; ++i) printf "%d %d %.17g\n", i, j, 0.3 * sin(i * 0.7) * cos(j * 0.6)
+    for (j = 0; j < ny; ++j) for (i = 0; i < nx; ++i) { a = j * (nx + 1) + i; b = a + 1; c = a + nx + 1; d = c + 1
+      print 3, a, b, d; print 3, a, d, c } }'
+}
+# vertex_of MESH N: the coordinates of vertex N of an OFF file whose header is on 2 lines
+vertex_of() { sed -n "$(($2 + 3))p" "$1"; }
+# line N FILE: line N (1-based) of FILE
+line() { sed -n "$1p" "$2"; }
+# expect_same_within TOLERANCE A B: two files of distances, line by line, to TOLERANCE relative (inf exactly)
+expect_same_within() {
+  paste "$2" "$3" | awk -v tol="$1" '{ ++n
+      if ($1 == "inf" || $2 == "inf") { if ($1 != $2) { print "line " n ": " $1 " != " $2; bad = 1 }; next }
+      d = $1 - $2; if (d < 0) d = -d; m = $2 < 0 ? -$2 : $2
+      if (d > tol * m + 1e-300) { print "line " n ": " $1 " != " $2; bad = 1 } }
+    END { exit bad }' || fail "$2 and $3 differ"
+  [ "$(wc -l < "$2")" -eq "$(wc -l < "$3")" ] || fail "$2 and $3 differ in length"
+}
+# check_npy FILE DESCR COUNT: a NumPy .npy file, format version 1.0, of COUNT values of type DESCR
+check_npy() {
+  [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 934e554d50590100 ] || fail "$1: not an npy 1.0 magic string"
+  local length=$(od -An -tu2 -j 8 -N 2 "$1" | tr -d ' ')
+  [ $(((10 + length) % 64)) -eq 0 ] || fail "$1: the data does not start at a multiple of 64 bytes"
+  local dict=$(head -c $((10 + length)) "$1" | tail -c "$length")
+  [[ "$dict" == "{'descr': '$2', 'fortran_order': False, 'shape': ($3,), }"* ]] || fail "$1: header $dict"
+  [ "$(head -c $((10 + length)) "$1" | tail -c 1 | od -An -tx1 | tr -d ' ')" = 0a ] || fail "$1: header without newline"
+  [ "$(stat -c %s "$1")" -eq $((10 + length + 8 * $3)) ] || fail "$1: not $3 values of 8 bytes"
+  npy_data=$((10 + length))
+}
 
 spot=$meshes/spot.ply
 case $case in
@@ -505,6 +539,154 @@ case $case in
     done
     run "$work/l.off" --quiet --source 2 --epsilon 1e-4 --output "$work/d.txt"; expect_rc 0
     expect_lines_within 1e-4 "$work/d.txt" 2 1 0 2.23606797749979 1.4142135623730951 1 2.8284271247461903 2.4142135623730951 ;;
+  # ---- several sources, surface points, targets, limits, labels, paths, npy (issues 16-18)
+  several_sources_give_the_minimum)  # the field of three sources is the smallest of their three fields
+    for s in 0 100 2000; do run "$spot" --quiet --source $s --output "$work/d$s.txt"; expect_rc 0; done
+    paste "$work/d0.txt" "$work/d100.txt" "$work/d2000.txt" |
+      awk '{ m = $1; if ($2 + 0 < m + 0) m = $2; if ($3 + 0 < m + 0) m = $3; print m }' > "$meta/min.txt"
+    run "$spot" --source 0 --source 100 --source 2000 --output "$work/d.txt"; expect_rc 0
+    [[ "$out" == *"sources vertex 0, vertex 100, vertex 2000"* ]] || fail "the summary does not list the sources: $out"
+    expect_same_within 1e-12 "$work/d.txt" "$meta/min.txt" ;;
+  labels_are_the_nearest_source)  # the number of the option whose field is the smallest (ties within rounding skipped)
+    for s in 0 100 2000; do run "$spot" --quiet --source $s --output "$work/d$s.txt"; expect_rc 0; done
+    run "$spot" --quiet --source 0 --source 100 --source 2000 --labels "$work/l.txt"; expect_rc 0
+    paste "$work/d0.txt" "$work/d100.txt" "$work/d2000.txt" "$work/l.txt" | awk '
+      { best = 0; m = $1; for (k = 1; k < 3; ++k) if ($(k + 1) + 0 < m + 0) { m = $(k + 1); best = k }
+        second = -1; for (k = 0; k < 3; ++k) if (k != best && (second < 0 || $(k + 1) + 0 < second)) second = $(k + 1) + 0
+        if ($4 != best && second - m > 1e-9 * m) { print "vertex " NR - 1 ": label " $4 ", nearest " best; bad = 1 }
+        ++count[$4] }
+      END { if (count[0] == 0 || count[1] == 0 || count[2] == 0) { print "a source labels nothing"; bad = 1 } exit bad }' ||
+      fail "labels are not the nearest sources"
+    # with a point, an unused vertex as source, and unreachable vertices (-1): the sources' order
+    run "$data/two_components_and_isolated_vertex.off" --quiet --source 3 --source-point 0.2 0.2 0 \
+        --output "$work/d.txt" --labels "$work/l.txt"; expect_rc 0
+    expect_lines "$work/d.txt" 0.28284271247461895 0.82462112512353203 0.82462112512353225 0 inf inf inf
+    [ "$(cat "$work/l.txt" | tr '\n' ' ')" = "1 1 1 0 -1 -1 -1 " ] || fail "labels: $(cat "$work/l.txt")"
+    run "$data/two_components_and_isolated_vertex.off" --quiet --source-point 10.5 0.2 0 --source 1 --labels -; expect_rc 0
+    [ "$(printf '%s\n' "$out" | tr '\n' ' ')" = "1 1 1 -1 0 0 0 " ] || fail "labels: $out" ;;
+  targets_are_the_field_values)  # printed as the field prints them, the propagation stopped early
+    for mode in --exact "--epsilon 1e-4" "--precision float"; do
+      run "$spot" --quiet --source 7 $mode --output "$work/full.txt"; expect_rc 0
+      run "$spot" --source 7 $mode --target 5 --target 100 --target 2929 --target 7; expect_rc 0
+      [ "$out" = "$(line 6 "$work/full.txt"; line 101 "$work/full.txt"; line 2930 "$work/full.txt"; echo 0)" ] ||
+        fail "$mode: targets $out"
+      [[ "$err" == *"dggvtp:"* ]] || fail "the summary should go to stderr"
+      rm "$work/full.txt"
+    done
+    run "$spot" --quiet --source 7 --target 8 --stats "$work/s.json"; expect_rc 0
+    reached=$(grep -o '"vertices_reached": *[0-9]*' "$work/s.json" | grep -o '[0-9]*$')
+    [ "$reached" -lt 2930 ] || fail "the propagation did not stop early ($reached vertices reached)"
+    grep -q '"targets": 1,' "$work/s.json" || fail "stats: no target count" ;;
+  max_distance_cuts_off)  # vertices farther than D are inf, the others keep their distance
+    run "$spot" --quiet --source 9 --output "$work/full.txt"; expect_rc 0
+    run "$spot" --quiet --source 9 --max-distance 0.5 --output "$work/cut.txt" --stats "$work/s.json"; expect_rc 0
+    paste "$work/full.txt" "$work/cut.txt" |
+      awk '{ e = ($1 + 0 > 0.5) ? "inf" : $1; if ($2 != e) { print NR ": " $2 " != " e; bad = 1 } if (e == "inf") ++cut }
+           END { if (cut == 0 || cut == NR) { print cut " cut"; bad = 1 } exit bad }' || fail "--max-distance 0.5"
+    grep -q "\"vertices_reached\": $(grep -vc inf "$work/cut.txt")," "$work/s.json" || fail "stats: vertices reached"
+    grep -q '"distance_limit": 0.5,' "$work/s.json" || fail "stats: no distance limit"
+    run "$spot" --quiet --source 9 --max-distance inf --output "$work/all.txt"; expect_rc 0
+    cmp -s "$work/full.txt" "$work/all.txt" || fail "--max-distance inf is not the full field"
+    run "$spot" --quiet --source 9 --max-distance 0 --output "$work/zero.txt"; expect_rc 0
+    [ "$(grep -vc inf "$work/zero.txt")" -eq 1 ] && [ "$(line 10 "$work/zero.txt")" = 0 ] || fail "--max-distance 0"
+    # a target beyond the limit is unreached
+    far=$(awk '$1 + 0 > 0.5 && $1 != "inf" { print NR - 1; exit }' "$work/full.txt")
+    run "$spot" --quiet --source 9 --max-distance 0.5 --target $far --target 9; expect_rc 0
+    [ "$out" = "$(printf 'inf\n0')" ] || fail "targets beyond the limit: $out" ;;
+  source_point_at_a_vertex)  # a point at a vertex's coordinates is that vertex: the same bytes
+    bumpy > "$work/b.off"
+    for v in 0 17 60 142; do
+      for mode in --exact "--epsilon 1e-4" "--precision float"; do
+        run "$work/b.off" --quiet --source $v $mode --output "$work/v.txt"; expect_rc 0
+        run "$work/b.off" --quiet --source-point $(vertex_of "$work/b.off" $v) $mode --output "$work/p.txt"; expect_rc 0
+        cmp -s "$work/v.txt" "$work/p.txt" || fail "vertex $v $mode: --source-point differs from --source"
+        run "$work/b.off" --quiet --source 5 $mode --target $v --target-point $(vertex_of "$work/b.off" $v); expect_rc 0
+        [ "$(printf '%s\n' "$out" | sort -u | wc -l)" -eq 1 ] || fail "vertex $v $mode: --target-point differs from --target: $out"
+        rm "$work/v.txt" "$work/p.txt"
+      done
+    done
+    if command -v python3 > /dev/null; then  # spot's float coordinates, exactly: the closest point
+      # computed to vertex 1500 is a rounding error away from it
+      read -r x y z < <(python3 - "$spot" <<'PY'
+import struct, sys
+f = open(sys.argv[1], 'rb').read()
+print(' '.join('%.17g' % c for c in struct.unpack_from('<3f', f, f.index(b'end_header\n') + 11 + 12 * 1500)))
+PY
+)
+      run "$spot" --quiet --source 1500 --output "$work/v.txt"; expect_rc 0
+      run "$spot" --quiet --source-point "$x" "$y" "$z" --output "$work/p.txt"; expect_rc 0
+      cmp -s "$work/v.txt" "$work/p.txt" || fail "spot vertex 1500: --source-point differs from --source"
+    fi
+    # on a flat square, a point inside and the same point 3 above it: Euclidean distances
+    for z in 0 3; do
+      run "$data/quad.off" --quiet --source-point 0.25 0.5 $z --output "$work/d.txt"; expect_rc 0
+      expect_lines "$work/d.txt" 0.55901699437494745 0.90138781886599739 0.90138781886599739 0.55901699437494745
+    done ;;
+  paths_obj_and_lengths)  # lengths equal to the distances, an OBJ of v and l lines
+    for mode in --exact "--epsilon 1e-4" "--precision float"; do
+      tolerance=1e-12; [ "$mode" = "--precision float" ] && tolerance=1e-6   # lengths in double on float distances
+      run "$spot" --quiet --source 7 $mode --output "$work/full.txt"; expect_rc 0
+      run "$spot" --quiet --source 7 $mode --target-point 0.1 0.2 0.3; expect_rc 0
+      at_point=$out
+      run "$spot" --quiet --source 7 $mode --path-to 2000 --path-to 5 --path-to 7 --path-to-point 0.1 0.2 0.3 \
+          --paths "$work/p.obj"; expect_rc 0
+      printf '%s\n' "$out" > "$meta/lengths.txt"
+      expect_lines_within $tolerance "$meta/lengths.txt" "$(line 2001 "$work/full.txt")" "$(line 6 "$work/full.txt")" 0 "$at_point"
+      awk '/^#/ { if (/^# path /) ++paths; next }
+           /^v / { if (NF != 4) { print "v line " NR; bad = 1 } for (i = 2; i <= 4; ++i) if ($i !~ /^-?[0-9.]+(e[-+][0-9]+)?$/) { print "coordinate " $i; bad = 1 }; ++nv; next }
+           /^l / { ++nl; if (NF < 3) { print "l line " NR " of one point"; bad = 1 }
+                   for (i = 2; i <= NF; ++i) if ($i !~ /^[0-9]+$/ || $i < 1 || $i > nv) { print "l line " NR ": index " $i; bad = 1 }; next }
+           { print "line " NR ": " $0; bad = 1 }
+           END { if (paths != 4 || nl != 3) { print paths " paths, " nl " l lines"; bad = 1 } exit bad }' "$work/p.obj" ||
+        fail "$mode: the OBJ file is not 4 paths of v and l lines"
+      rm "$work/full.txt" "$work/p.obj"
+    done
+    # a path beyond --max-distance: unreached, inf, no points
+    run "$spot" --quiet --source 7 --max-distance 0.1 --path-to 2000 --paths "$work/p.obj"; expect_rc 0
+    [ "$out" = inf ] || fail "path beyond the limit: $out"
+    ! grep -q '^[vl] ' "$work/p.obj" || fail "an unreached path has points" ;;
+  npy_output)  # NumPy .npy 1.0: the text output's values bit for bit
+    run "$spot" --quiet --source 3 --source 900 --output "$work/d.txt" --labels "$work/l.txt"; expect_rc 0
+    run "$spot" --quiet --source 3 --source 900 --output-format npy --output "$work/d.npy" --labels "$work/l.npy"; expect_rc 0
+    check_npy "$work/d.npy" '<f8' 2930
+    if command -v python3 > /dev/null; then
+      python3 - "$work/d.npy" "$work/d.txt" "$npy_data" <<'PY' || fail "npy values differ from the text output"
+import struct, sys
+data = open(sys.argv[1], 'rb').read()[int(sys.argv[3]):]
+text = [float(x) for x in open(sys.argv[2]).read().split()]
+values = struct.unpack('<%dd' % len(text), data)
+sys.exit(0 if all(struct.pack('<d', a) == struct.pack('<d', b) for a, b in zip(values, text)) else 1)
+PY
+    else  # od prints doubles to 17 digits at best: compare to rounding
+      od -An -v -tf8 -j "$npy_data" "$work/d.npy" | tr -s ' ' '\n' | sed '/^$/d' > "$meta/values.txt"
+      expect_same_within 1e-15 "$meta/values.txt" "$work/d.txt"
+    fi
+    check_npy "$work/l.npy" '<i8' 2930
+    od -An -v -td8 -j "$npy_data" "$work/l.npy" | tr -s ' ' '\n' | sed '/^$/d' > "$meta/labels.txt"
+    cmp -s "$meta/labels.txt" "$work/l.txt" || fail "npy labels differ from the text output"
+    # unreachable: inf and -1, as bits
+    run "$data/two_components_and_isolated_vertex.off" --quiet --output-format npy --output "$work/u.npy" --labels "$work/u_l.npy"; expect_rc 0
+    check_npy "$work/u.npy" '<f8' 7
+    [ "$(od -An -v -tx8 -j "$npy_data" "$work/u.npy" | tr -s ' \n' ' ')" = " 0000000000000000 3ff0000000000000 3ff0000000000000 7ff0000000000000 7ff0000000000000 7ff0000000000000 7ff0000000000000 " ] ||
+      fail "npy of unreachable vertices: $(od -An -tx8 -j "$npy_data" "$work/u.npy")"
+    check_npy "$work/u_l.npy" '<i8' 7
+    [ "$(od -An -v -td8 -j "$npy_data" "$work/u_l.npy" | tr -s ' \n' ' ')" = " 0 0 0 -1 -1 -1 -1 " ] || fail "npy labels of unreachable vertices" ;;
+  bad_query_values)  # bad usage: exit 1; places the mesh does not have: exit 2, no output
+    for args in "--max-distance -1" "--max-distance nan" "--max-distance abc" "--source-point 0 inf 0" \
+                "--target-point nan 0 0" "--path-to-point 1 2 x" "--source-point 1 2" "--target -3" \
+                "--output-format csv" "--paths $work/p.obj" "--target 3 --output $work/d.txt" \
+                "--path-to 3 --labels $work/l.txt" "--output - --labels -" "--target 3 --output -"; do
+      run "$spot" $args; expect_usage_error
+    done
+    for args in "--target 2930" "--path-to 99999 --paths $work/p.obj" "--source 5 --source 2930" "--target-point 0 0 0 --source 2930"; do
+      run "$spot" $args --stats "$work/d.txt"; expect_input_error
+      [ ! -e "$work/p.obj" ] || fail "$args: a paths file was written"
+      [[ "$err" == *"out of range"* ]] || fail "$args: $err"
+    done
+    printf 'OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n' | input v.off   # no face to place a point on
+    run "$work/v.off" --source-point 0 0 0 --output "$work/d.txt"; expect_input_error
+    # points, but the only source a vertex no face uses
+    run "$data/two_components_and_isolated_vertex.off" --source 3 --target-point 0.2 0.2 0; expect_input_error ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"

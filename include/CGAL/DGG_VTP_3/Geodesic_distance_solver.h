@@ -324,11 +324,11 @@ public:
     builder().add_sources(sources, query);
     if(query.vertex_sources.empty() && query.point_sources.empty())
       throw std::invalid_argument("no source given");
-    add_query_options(np, query);
+    const auto targets = add_query_options(np, query);
     query.record_origins = query.record_arrivals = true;
     internal::Window_propagation<Computation_FT> propagation(m_mesh, m_partition, accuracy);
     propagation.template run<Effective_tag<ConcurrencyTag>>(query);
-    return Shortest_path_tree<Geodesic_distance_solver>(*this, propagation, query);
+    return Shortest_path_tree<Geodesic_distance_solver>(*this, propagation, query, targets);
   }
 
   std::size_t number_of_vertices() const { return m_vertices.size(); }

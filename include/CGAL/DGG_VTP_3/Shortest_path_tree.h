@@ -6,6 +6,7 @@
 #ifndef CGAL_DGG_VTP_3_SHORTEST_PATH_TREE_H
 #define CGAL_DGG_VTP_3_SHORTEST_PATH_TREE_H
 
+#include <CGAL/DGG_VTP_3/Propagation_statistics.h>
 #include <CGAL/DGG_VTP_3/internal/Path_tracer.h>
 #include <CGAL/DGG_VTP_3/internal/Point_targets.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
@@ -17,6 +18,7 @@
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -65,8 +67,17 @@ public:
 
   /// the distance of `v` (`+infinity` if unreachable)
   FT distance(vertex_descriptor v) const { return FT(m_distance[m_solver->checked_vertex(v)]); }
-  /// the distance of the `k`-th target of the query
-  FT target_distance(std::size_t k) const { return FT(checked_target(k).distance); }
+  /// the distance of the `k`-th target of the query, vertex or point (`+infinity` if unreachable or
+  /// beyond the query's maximum distance)
+  FT target_distance(std::size_t k) const
+  {
+    const Place& place = checked_place(k);
+    const Computation_FT d = place.first ? m_distance[place.second] : m_targets[place.second].distance;
+    return FT(d > m_query.max_distance ? std::numeric_limits<Computation_FT>::infinity() : d);
+  }
+
+  /// what the propagation did
+  const Propagation_statistics& statistics() const { return m_statistics; }
 
   /// the number of the nearest source of `v` in the query's order (`std::size_t(-1)` if unreachable)
   std::size_t nearest_source(vertex_descriptor v) const
@@ -82,23 +93,20 @@ public:
   template <class OutputIterator>
   OutputIterator shortest_path(vertex_descriptor target, OutputIterator out) const
   {
-    std::vector<Internal_point> path;
-    const Index v = m_solver->checked_vertex(target);
-    if(m_origin[v] != no_origin() && m_distance[v] < std::numeric_limits<Computation_FT>::infinity())
-    {
-      path.push_back(Tracer(m_solver->m_mesh).vertex_point(v, first_face(v)));
-      trace_from(v, path);
-    }
-    return to_user(path, out);
+    return to_user(path_from_vertex(m_solver->checked_vertex(target)), out);
   }
 
-  /// the same for the `k`-th target of the query
+  /// the same for the `k`-th target of the query, vertex or point
   template <class OutputIterator>
   OutputIterator shortest_path_to_target(std::size_t k, OutputIterator out) const
   {
-    const auto& a = checked_target(k);
+    const Place& place = checked_place(k);
+    if(place.first)
+      return to_user(path_from_vertex(place.second), out);
+    const Target& a = m_targets[place.second];
     std::vector<Internal_point> path;
-    if(a.origin != no_origin() && a.distance < std::numeric_limits<Computation_FT>::infinity())
+    if(a.origin != no_origin() && a.distance < std::numeric_limits<Computation_FT>::infinity() &&
+       a.distance <= m_query.max_distance) // farther points are unreached, as farther vertices
     {
       const Tracer tracer(m_solver->m_mesh);
       const Index h = a.frame;
@@ -134,25 +142,41 @@ private:
   friend Solver;
   using Arrival = typename internal::Window_propagation<Computation_FT>::Arrival;
   using Target = typename internal::Point_targets<Computation_FT>::Arrival;
+  // where a target of the query is: a vertex (true) or the number of a point target
+  using Place = std::pair<bool, Index>;
 
   static Index no_origin() { return internal::Window_propagation<Computation_FT>::no_origin(); }
 
   Shortest_path_tree(const Solver& solver, internal::Window_propagation<Computation_FT>& propagation,
-                     const internal::Propagation_query<Computation_FT>& query)
+                     const internal::Propagation_query<Computation_FT>& query, const std::vector<Place>& places)
     : m_solver(&solver)
     , m_distance(propagation.distances())
     , m_origin(propagation.origins())
     , m_arrival(propagation.arrivals())
+    , m_places(places)
     , m_query(query)
+    , m_statistics(propagation.statistics())
   {
     propagation.point_targets().combine(m_targets);
   }
 
-  const Target& checked_target(std::size_t k) const
+  const Place& checked_place(std::size_t k) const
   {
-    if(k >= m_targets.size())
+    if(k >= m_places.size())
       throw std::invalid_argument("no such target in the query");
-    return m_targets[k];
+    return m_places[k];
+  }
+
+  // the path from vertex `v` back to its nearest source; empty if unreachable
+  std::vector<Internal_point> path_from_vertex(Index v) const
+  {
+    std::vector<Internal_point> path;
+    if(m_origin[v] != no_origin() && m_distance[v] < std::numeric_limits<Computation_FT>::infinity())
+    {
+      path.push_back(Tracer(m_solver->m_mesh).vertex_point(v, first_face(v)));
+      trace_from(v, path);
+    }
+    return path;
   }
 
   Index first_face(Index v) const { return *m_solver->m_mesh.corners_begin(v) / 3; }
@@ -226,8 +250,10 @@ private:
   std::vector<Computation_FT> m_distance; // per vertex
   std::vector<Index> m_origin;            // per vertex: the pseudo-source of its path
   std::vector<Arrival> m_arrival;         // per vertex: the corner and direction its path arrives from
-  std::vector<Target> m_targets;          // per target of the query: how its path arrives
+  std::vector<Target> m_targets;          // per point target of the query: how its path arrives
+  std::vector<Place> m_places;            // per target of the query, in its order: where it is
   internal::Propagation_query<Computation_FT> m_query; // the sources
+  Propagation_statistics m_statistics;    // what the propagation did
 };
 
 } // namespace DGG_VTP_3
