@@ -101,9 +101,9 @@ non-finite coordinate, a face with fewer than 3 or repeated vertices, a degenera
 length edge or zero area), a sliver (an edge more than 1e10 times longer than the height on it),
 the tip of a cone sharper than 1e-4 radians (windows would wrap around those for hours), a polygon that cannot be triangulated (it touches or crosses itself)
 or an out-of-range vertex is an error: one line on stderr starting with 'error:', exit status 2,
-and no output file; so are OFF files with texture coordinates (STOFF), binary OFF with colours,
-and skeletons (SKEL), which CGAL's reader cannot read safely. Bad usage, including an option
-value out of its range (a negative --max-distance, a coordinate that is not finite): exit status 1.
+and no output file; so are a negative or NaN --max-distance, a point coordinate that is not
+finite, OFF files with texture coordinates (STOFF), binary OFF with colours, and skeletons
+(SKEL), which CGAL's reader cannot read safely. Bad usage: exit status 1.
 )";
 
 struct Usage_error : std::runtime_error
@@ -198,7 +198,7 @@ Options parse_options(int argc, char** argv)
       {
         c = parse_number<double>(arg, value());
         if(!std::isfinite(c))
-          throw Usage_error(arg + " needs finite coordinates");
+          throw dggvtp::Input_error(arg + " needs finite coordinates");
       }
       places_of(arg.substr(0, arg.size() - std::strlen("-point"))).push_back(place);
     }
@@ -206,7 +206,7 @@ Options parse_options(int argc, char** argv)
     {
       options.max_distance = parse_number<double>(arg, value());
       if(!(options.max_distance >= 0.))
-        throw Usage_error("--max-distance must be a number >= 0 (inf allowed)");
+        throw dggvtp::Input_error("--max-distance must be a number >= 0 (inf allowed)");
     }
     else if(arg == "--output-format")
     {

@@ -671,9 +671,11 @@ PY
       fail "npy of unreachable vertices: $(od -An -tx8 -j "$npy_data" "$work/u.npy")"
     check_npy "$work/u_l.npy" '<i8' 7
     [ "$(od -An -v -td8 -j "$npy_data" "$work/u_l.npy" | tr -s ' \n' ' ')" = " 0 0 0 -1 -1 -1 -1 " ] || fail "npy labels of unreachable vertices" ;;
-  bad_query_values)  # bad usage: exit 1; places the mesh does not have: exit 2, no output
-    for args in "--max-distance -1" "--max-distance nan" "--max-distance abc" "--source-point 0 inf 0" \
-                "--target-point nan 0 0" "--path-to-point 1 2 x" "--source-point 1 2" "--target -3" \
+  bad_query_values)  # bad usage: exit 1; values out of range and places the mesh does not have: exit 2, no output
+    for args in "--max-distance -1" "--max-distance nan" "--source-point 0 inf 0" "--target-point nan 0 0"; do
+      run "$spot" $args --output "$work/d.txt"; expect_input_error
+    done
+    for args in "--max-distance abc" "--path-to-point 1 2 x" "--source-point 1 2" "--target -3" \
                 "--output-format csv" "--paths $work/p.obj" "--target 3 --output $work/d.txt" \
                 "--path-to 3 --labels $work/l.txt" "--output - --labels -" "--target 3 --output -"; do
       run "$spot" $args; expect_usage_error
