@@ -7,6 +7,7 @@
 #define CGAL_DGG_VTP_3_INTERNAL_POINT_TARGETS_H
 
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
+#include <CGAL/DGG_VTP_3/internal/Surface_point.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
@@ -53,15 +54,10 @@ public:
       for(int k = 0; k < 3; ++k)
         if(q.barycentric[k] == FT(0))
         {
-          // on the edge opposite corner k, halfedge 3f + k + 1: the same point in the neighbour
-          const Index h = 3 * q.face + (k + 1) % 3;
-          const Index o = mesh.opposite(h);
-          if(o == Mesh::no_halfedge)
-            continue;
-          std::array<FT, 3> b{FT(0), FT(0), FT(0)};
-          b[o % 3] = q.barycentric[(k + 2) % 3];           // o starts where h ends
-          b[(o + 1) % 3] = q.barycentric[(k + 1) % 3];
-          entries.emplace_back(Mesh::face(o), Entry{Index(t), b, infinity(), Index(-1), Index(-1), Point{FT(0), FT(0)}});
+          const Surface_point<FT> other = same_point_across_edge(mesh, q, k);
+          if(other.face != Index(-1))
+            entries.emplace_back(other.face, Entry{Index(t), other.barycentric, infinity(), Index(-1), Index(-1),
+                                                   Point{FT(0), FT(0)}});
         }
     }
     std::stable_sort(entries.begin(), entries.end(),

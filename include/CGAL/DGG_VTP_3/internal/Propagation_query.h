@@ -6,7 +6,8 @@
 #ifndef CGAL_DGG_VTP_3_INTERNAL_PROPAGATION_QUERY_H
 #define CGAL_DGG_VTP_3_INTERNAL_PROPAGATION_QUERY_H
 
-#include <array>
+#include <CGAL/DGG_VTP_3/internal/Surface_point.h>
+
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -14,15 +15,6 @@
 namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
-
-// A point of the surface in the solver's numbering: a face and the barycentric coordinates of its
-// three corners (corner k of face f is the source of halfedge 3 f + k, as in Unfolded_mesh).
-template <class FT>
-struct Surface_point
-{
-  std::uint32_t face;
-  std::array<FT, 3> barycentric;
-};
 
 // What one propagation is asked: where it starts, how far it needs to go, what it records.
 template <class FT>

@@ -11,6 +11,7 @@
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Point_targets.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
+#include <CGAL/DGG_VTP_3/internal/Pseudo_source_emission.h>
 #include <CGAL/DGG_VTP_3/internal/Round_scheduler.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
@@ -18,6 +19,7 @@
 #include <CGAL/DGG_VTP_3/internal/Window_construction.h>
 #include <CGAL/DGG_VTP_3/internal/Window_lists.h>
 #include <CGAL/DGG_VTP_3/internal/Window_pruning.h>
+#include <CGAL/DGG_VTP_3/internal/early_termination.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
 #include <boost/heap/d_ary_heap.hpp>
@@ -38,12 +40,12 @@ namespace internal {
 // per-query scratch of the const queries of Geodesic_distance_solver.
 //
 // Windows sit in per-halfedge window lists; a vertex-oriented priority queue pops the nearest
-// vertex, which may emit windows as a pseudo-source and brings its faces into the propagation
-// region R; then the window lists inside R are propagated in FIFO order until every window has
-// left R. Pruning is by the distance bound, the ICH rule and "one angle, two sides" (and
-// pairwise trimming in the exact mode, see Window_pruning). With accuracy 0 this is the exact
-// VTP algorithm: only saddle, border and non-manifold vertices are pseudo-sources and windows
-// travel without bound.
+// vertex, which may emit windows as a pseudo-source (see Pseudo_source_emission) and brings its
+// faces into the propagation region R; then the window lists inside R are propagated in FIFO
+// order until every window has left R. Pruning is by the distance bound, the ICH rule and "one
+// angle, two sides" (and pairwise trimming in the exact mode, see Window_pruning). With accuracy
+// 0 this is the exact VTP algorithm: only saddle, border and non-manifold vertices are
+// pseudo-sources and windows travel without bound.
 //
 // The algorithm runs on one patch of faces at a time (Patch_partition), in rounds that a
 // Round_scheduler drives; whatever it does to another patch's part of the mesh goes through the
@@ -66,7 +68,7 @@ public:
     , m_partition(partition)
     , m_scheduler(partition, mesh.number_of_vertices())
     , m_bound_epsilon(T::bound_epsilon(accuracy))
-    , m_fan_half_width(T::fan_half_width(accuracy))
+    , m_emission(mesh, m_bound_epsilon, T::fan_half_width(accuracy))
     , m_distance(mesh.number_of_vertices(), infinity())
     , m_incoming(mesh.number_of_vertices())
     , m_in_region(mesh.number_of_faces(), 0)
@@ -101,8 +103,10 @@ public:
       m_patches[m_partition.owner(s)].queue.push(Queue_entry(FT(0), s));
     }
     m_targets = Point_targets<FT>(m_mesh, query.point_targets);
+    const auto out_in_face = [this](Index f) { return Emission_out{*this, m_patches[m_partition.patch_of_face(f)]}; };
     for(std::size_t k = 0; k < query.point_sources.size(); ++k)
-      emit_from_surface_point(query.point_sources[k], nv + query.source_numbers[query.vertex_sources.size() + k]);
+      m_emission.from_surface_point(query.point_sources[k], nv + query.source_numbers[query.vertex_sources.size() + k],
+                                    out_in_face);
     if(!query.point_sources.empty())
       m_scheduler.template deliver_now<ConcurrencyTag>(*this);
     m_scheduler.template run<ConcurrencyTag>(*this, m_stats.windows_peak);
@@ -175,21 +179,8 @@ private:
 
   bool has_lists_to_propagate(Index k) const { return !m_patches[k].fifo.empty(); }
 
-  // Early termination: the vertices nearer than the query's largest distance of interest are
-  // final once no vertex within a few mean edge lengths beyond it is left to pop (the band of
-  // twice a round's width absorbs what windows crossing the last faces still bring).
-  FT stop_limit() const
-  {
-    FT limit = m_query->max_distance;
-    if(!m_query->vertex_targets.empty() || !m_targets.empty())
-    {
-      FT targets = m_targets.empty() ? FT(0) : m_targets.largest();
-      for(Index v : m_query->vertex_targets)
-        targets = (std::max)(targets, m_distance[v]);
-      limit = (std::min)(limit, targets);
-    }
-    return limit < infinity() ? limit + FT(2) * m_partition.band() : limit;
-  }
+  // no vertex farther than this needs to be popped (+inf: all of them)
+  FT stop_limit() const { return early_termination_limit(*m_query, m_targets, m_distance, m_partition.band()); }
 
   // lines 9-29 in one patch, for the vertices nearer than `limit`
   void run_round(Index k, FT limit)
@@ -204,12 +195,14 @@ private:
       if(top.first > m_distance[v])
         continue; // superseded by a later, shorter distance
       ++p.stats.vertices_popped;
+      // lines 10-13: v as a pseudo-source
+      Emission_out out{*this, p};
       if(m_is_source[v] || m_mesh.is_singular(v))
-        emit_pseudo_source_windows(p, v, m_mesh.corners_begin(v), m_mesh.corners_end(v));
+        m_emission.all_around(v, m_distance[v], out);
       else if(is_dgg())
-        emit_pseudo_source_windows_in_fan(p, v);
+        m_emission.in_fan(v, m_distance[v], m_incoming[v], out);
       else if(m_mesh.is_exact_pseudo_source(v))
-        emit_pseudo_source_windows_in_shadow(p, v);
+        m_emission.in_shadow(v, m_distance[v], m_incoming[v], out);
       enter_propagation_region(p, v);
       propagate_scheduled_lists(p);
     }
@@ -264,7 +257,7 @@ private:
     using std::atan2;
     const FT back = m_mesh.corner_start_angle(corner) + atan2(direction.y, direction.x);
     const FT dv = m_distance[v];
-    Incoming& in = m_incoming[v];
+    Incoming_directions<FT>& in = m_incoming[v];
     if(d < dv - T::rounding_margin(dv) || dv == infinity())
     {
       m_distance[v] = d;
@@ -289,123 +282,18 @@ private:
     }
   }
 
-  // Lines 11-13 of the exact algorithm: a shortest path bends at a saddle only if it turns by at
-  // least pi on both sides, so a saddle emits windows only into the faces that meet the cone
-  // [back + pi, back + angle_sum - pi] of the directions it arrived from, widened by a small
-  // angle for rounding (emitting more is always safe: windows are real paths, pruned later).
-  void emit_pseudo_source_windows_in_shadow(Patch& p, Index v)
+  // what the pseudo-sources of patch `patch` send out (see Pseudo_source_emission)
+  struct Emission_out
   {
-    const FT theta = m_mesh.angle_sum(v);
-    const FT widen = T::shadow_widening();
-    emit_pseudo_source_windows_in_cone(p, v, T::pi() - widen, theta - T::pi() + widen);
-  }
-
-  // Lines 11-12 of DGG-VTP: every vertex is a pseudo-source, but only inside its fan, the
-  // directions nearly straight ahead of the geodesic that reached it (paper, Fig. 5): the
-  // straight continuations on the two sides, back + pi and back + angle_sum - pi, widened by the
-  // fan half-width on both sides (for a convex vertex they swap places).
-  void emit_pseudo_source_windows_in_fan(Patch& p, Index v)
-  {
-    const FT theta = m_mesh.angle_sum(v);
-    const FT left = T::pi(), right = theta - T::pi();
-    emit_pseudo_source_windows_in_cone(p, v, (std::min)(left, right) - m_fan_half_width,
-                                       (std::max)(left, right) + m_fan_half_width);
-  }
-
-  // windows into the faces that meet [back + from, back + to] for some recorded arrival
-  // direction back (a union of cones sliding with back)
-  void emit_pseudo_source_windows_in_cone(Patch& p, Index v, FT from_back, FT to_back)
-  {
-    const FT theta = m_mesh.angle_sum(v);
-    const Incoming& in = m_incoming[v];
-    FT from = in.low + from_back;
-    const FT width = (in.high + to_back) - from;
-    if(!(width < theta))
+    Window_propagation& propagation;
+    Patch& patch;
+    void relax(Index v, FT d, Index corner, const Point& direction, Index origin)
     {
-      emit_pseudo_source_windows(p, v, m_mesh.corners_begin(v), m_mesh.corners_end(v));
-      return;
+      propagation.relax(patch, v, d, corner, direction, origin);
     }
-    if(width < FT(0))
-      return;
-    from = std::fmod(from, theta);
-    if(from < FT(0))
-      from += theta;
-    // the cone is [from, from + width] on the circle of length theta; corners in turning order
-    ++p.stats.pseudo_sources;
-    for(const Index* c = m_mesh.corners_begin(v); c != m_mesh.corners_end(v); ++c)
-    {
-      const FT start = m_mesh.corner_start_angle(*c);
-      const FT end = start + m_mesh.corner_angle(*c);
-      const bool meets = (end >= from && start <= from + width) ||
-                         (end + theta >= from && start + theta <= from + width);
-      if(meets)
-        emit_window_across_corner(p, v, *c);
-    }
-  }
-
-  void emit_pseudo_source_windows(Patch& p, Index v, const Index* first, const Index* last)
-  {
-    ++p.stats.pseudo_sources;
-    for(const Index* c = first; c != last; ++c)
-      emit_window_across_corner(p, v, *c);
-  }
-
-  // a full-edge window on the edge opposite `v` in the face of corner `h`, and the distances of
-  // the corner's two other vertices along its edges
-  void emit_window_across_corner(Patch& p, Index v, Index h)
-  {
-    const FT dv = m_distance[v];
-    const Index across = Mesh::next(h);
-    const Index prev = Mesh::prev(h);
-    // from target(h) back along its corner's last edge, from source(prev) back along prev
-    relax(p, m_mesh.target(h), dv + m_mesh.length(h), across, m_mesh.apex(across), v);
-    relax(p, m_mesh.source(prev), dv + m_mesh.length(prev), prev, Point{FT(1), FT(0)}, v);
-    const Index t = m_mesh.opposite(across);
-    if(t != Mesh::no_halfedge)
-      add_window(p, t, window_across_corner(m_mesh, h, dv, m_bound_epsilon, v));
-  }
-
-  // A source inside a face (or on an edge, then in both faces) reaches the face's corners
-  // straight and sends a full-edge window across each edge it is not on (lines 2-7).
-  void emit_from_surface_point(const Surface_point<FT>& s, Index origin)
-  {
-    Surface_point<FT> other{Index(-1), {FT(0), FT(0), FT(0)}};
-    for(int k = 0; k < 3; ++k)
-      if(s.barycentric[k] == FT(0))
-      {
-        const Index o = m_mesh.opposite(3 * s.face + (k + 1) % 3);
-        if(o == Mesh::no_halfedge)
-          continue;
-        other.face = Mesh::face(o);
-        other.barycentric[o % 3] = s.barycentric[(k + 2) % 3];
-        other.barycentric[(o + 1) % 3] = s.barycentric[(k + 1) % 3];
-      }
-    // the two faces of an edge point in the same order however the point was given
-    if(other.face != Index(-1) && other.face < s.face)
-      emit_from_point_in_face(other.face, other.barycentric, origin);
-    emit_from_point_in_face(s.face, s.barycentric, origin);
-    if(other.face != Index(-1) && other.face > s.face)
-      emit_from_point_in_face(other.face, other.barycentric, origin);
-  }
-
-  void emit_from_point_in_face(Index f, const std::array<FT, 3>& b, Index origin)
-  {
-    Patch& p = m_patches[m_partition.patch_of_face(f)];
-    ++p.stats.pseudo_sources;
-    for(int k = 0; k < 3; ++k)
-    {
-      // in the frame of halfedge e = 3f + k: its source at the origin, its target at (len, 0)
-      const Index e = 3 * f + k;
-      const Point c = m_mesh.apex(e);
-      const Point q{b[(k + 1) % 3] * m_mesh.length(e) + b[(k + 2) % 3] * c.x, b[(k + 2) % 3] * c.y};
-      const FT to_source = length(q);
-      relax(p, m_mesh.source(e), to_source, e, q, origin);
-      const Index t = m_mesh.opposite(e);
-      if(b[(k + 2) % 3] != FT(0) && t != Mesh::no_halfedge) // not on this edge
-        add_window(p, t, window_from_point(m_mesh, e, q, FT(0), length(q - Point{m_mesh.length(e), FT(0)}),
-                                           to_source, m_bound_epsilon, origin));
-    }
-  }
+    void add_window(Index h, const Win& w) { propagation.add_window(patch, h, w); }
+    void count_pseudo_source() { ++patch.stats.pseudo_sources; }
+  };
 
   // lines 14-15
   void enter_propagation_region(Patch& p, Index v)
@@ -484,33 +372,13 @@ private:
 
     // "one angle, two sides": the window that reaches c best, B, splits the face along its path
     // to c, and the other windows' children keep to their side of it (see sides_of_best_path)
-    FT best_distance = infinity();
-    FT best_crossing = FT(0);
-    const Win* best = nullptr;
-    p.toward_apex.resize(p.buffer.size());
-    for(std::size_t i = 0; i < p.buffer.size(); ++i)
-    {
-      const Win& w = p.buffer[i];
-      Toward_apex<FT>& t = p.toward_apex[i];
-      const FT x = t.crossing = x_axis_crossing(w.source, c);
-      t.distance = infinity();
-      if(w.b0 <= x && x <= w.b1)
-      {
-        const FT d = t.distance = w.distance_to(c);
-        if(d < best_distance)
-        {
-          best_distance = d;
-          best_crossing = x;
-          best = &w;
-        }
-      }
-    }
-    if(best != nullptr) // lines 21-24 for the apex
+    const Best_toward_apex<FT> best = best_toward_apex(p.buffer, c, p.toward_apex);
+    if(best.window != nullptr) // lines 21-24 for the apex
     {
       // arrival direction at c, in the frame of c's corner prev(h), which starts along c -> a
       const Point to_a = Point{FT(0), FT(0)} - c;
-      const Point back = best->source - c;
-      relax(p, apex_vertex, best_distance, Mesh::prev(h), Point{dot(to_a, back), cross(to_a, back)}, best->origin);
+      const Point back = best.window->source - c;
+      relax(p, apex_vertex, best.distance, Mesh::prev(h), Point{dot(to_a, back), cross(to_a, back)}, best.window->origin);
     }
 
     // lines 19-26: the children on the edges (c, a) and (b, c); a child whose ray grazes c takes
@@ -524,8 +392,8 @@ private:
       const Win& w = p.buffer[i];
       const FT x = p.toward_apex[i].crossing;
       Sides<FT> keep{w.b1, w.b0};
-      if(best != nullptr && &w != best)
-        keep = sides_of_best_path(w, p.toward_apex[i], c, *best, best_crossing, best_distance, m_bound_epsilon);
+      if(best.window != nullptr && &w != best.window)
+        keep = sides_of_best_path(w, p.toward_apex[i], c, best, m_bound_epsilon);
       if(left != Mesh::no_halfedge && w.b0 < (std::min)(x, keep.left_end) &&
          left_child(w, c, x, keep.left_end, m_mesh.length(Mesh::prev(h)), child))
       {
@@ -558,21 +426,13 @@ private:
 
   // ---------------------------------------------------------------------------------------------
 
-  // polar angles at a vertex (see Unfolded_mesh::corner_start_angle) of the directions back along
-  // the shortest paths found so far; a range when several paths tie
-  struct Incoming
-  {
-    FT low = FT(0);
-    FT high = FT(0);
-  };
-
   const Mesh& m_mesh;
   const Patch_partition<FT>& m_partition;
   Scheduler m_scheduler;
   const FT m_bound_epsilon;           // epsilon of the distance bound (0: exact, no bound)
-  const FT m_fan_half_width;          // radians added on both sides of a pseudo-source's fan
+  const Pseudo_source_emission<FT> m_emission; // what pseudo-sources send out, and where
   std::vector<FT> m_distance;         // per vertex: best distance found so far (+inf: not reached)
-  std::vector<Incoming> m_incoming;   // per vertex: arrival directions of its best paths
+  std::vector<Incoming_directions<FT>> m_incoming; // per vertex: arrival directions of its best paths
   std::vector<char> m_in_region;      // per face: inside the propagation region R
   std::vector<char> m_scheduled;      // per halfedge: its window list is in its patch's FIFO
   std::vector<char> m_is_source;      // per vertex: one of the sources (they emit all around)

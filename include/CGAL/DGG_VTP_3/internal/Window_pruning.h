@@ -85,6 +85,39 @@ struct Toward_apex
   FT distance;
 };
 
+// B, the window of a list that reaches the apex c best: its distance to c and where its ray to c
+// crosses the edge (window null if no window lights c)
+template <class FT>
+struct Best_toward_apex
+{
+  const Window<FT>* window;
+  FT distance;
+  FT crossing;
+};
+
+// every window of `windows` seen from the apex c (into `toward_apex`), and the best of them
+template <class FT>
+inline Best_toward_apex<FT> best_toward_apex(const std::vector<Window<FT>>& windows, const Vec2<FT>& c,
+                                             std::vector<Toward_apex<FT>>& toward_apex)
+{
+  Best_toward_apex<FT> best{nullptr, std::numeric_limits<FT>::infinity(), FT(0)};
+  toward_apex.resize(windows.size());
+  for(std::size_t i = 0; i < windows.size(); ++i)
+  {
+    const Window<FT>& w = windows[i];
+    Toward_apex<FT>& t = toward_apex[i];
+    const FT x = t.crossing = x_axis_crossing(w.source, c);
+    t.distance = std::numeric_limits<FT>::infinity();
+    if(w.b0 <= x && x <= w.b1)
+    {
+      const FT d = t.distance = w.distance_to(c);
+      if(d < best.distance)
+        best = Best_toward_apex<FT>{&w, d, x};
+    }
+  }
+  return best;
+}
+
 // The part of a window's interval whose rays may still go left of the apex c (those up to
 // `left_end`) and right of it (from `right_start` on), given the best window B to c.
 template <class FT>
@@ -107,7 +140,7 @@ struct Sides
 // crossing keeps only its child on that side.
 template <class FT>
 inline Sides<FT> sides_of_best_path(const Window<FT>& w, const Toward_apex<FT>& t, const Vec2<FT>& c,
-                             const Window<FT>& best, FT best_crossing, FT best_distance, FT tolerance)
+                                    const Best_toward_apex<FT>& best, FT tolerance)
 {
   using Point = Vec2<FT>;
   const FT inf = std::numeric_limits<FT>::infinity();
@@ -119,31 +152,31 @@ inline Sides<FT> sides_of_best_path(const Window<FT>& w, const Toward_apex<FT>& 
     to_c = w.distance_to_base_point(end) + length(c - Point{end, FT(0)});
   }
   Sides<FT> keep{w.b1, w.b0};
-  if(to_c >= best_distance * (FT(1) + tolerance))
+  if(to_c >= best.distance * (FT(1) + tolerance))
   {
-    keep.left_end = (std::min)(best_crossing, w.b1);
-    keep.right_start = (std::max)(best_crossing, w.b0);
-    if(w.b0 < best_crossing && best_crossing < w.b1)
+    keep.left_end = (std::min)(best.crossing, w.b1);
+    keep.right_start = (std::max)(best.crossing, w.b0);
+    if(w.b0 < best.crossing && best.crossing < w.b1)
     {
       // a ray of w that meets the edge on the other side of B's line than w's source crossed
-      // that line below the edge; on B's segment [s_B, (best_crossing, 0)] (not beyond s_B) up
+      // that line below the edge; on B's segment [s_B, (B's crossing, 0)] (not beyond s_B) up
       // to the ray through s_B, which meets the edge at beyond_sB (all of them if s_B is not
       // nearer the edge than w's source)
-      const Point& sB = best.source;
-      const FT side = cross(Point{best_crossing - sB.x, -sB.y}, w.source - sB);
+      const Point& sB = best.window->source;
+      const FT side = cross(Point{best.crossing - sB.x, -sB.y}, w.source - sB);
       const bool sB_nearer = sB.y > w.source.y;
       const FT beyond_sB = sB_nearer ? x_axis_crossing(w.source, sB) : FT(0);
       if(side < FT(0))
-        keep.left_end = sB_nearer ? (std::min)(best_crossing, beyond_sB) : -inf;
+        keep.left_end = sB_nearer ? (std::min)(best.crossing, beyond_sB) : -inf;
       else if(side > FT(0))
-        keep.right_start = sB_nearer ? (std::max)(best_crossing, beyond_sB) : inf;
+        keep.right_start = sB_nearer ? (std::max)(best.crossing, beyond_sB) : inf;
     }
   }
   else if(lights_apex)
   {
-    if(w.b0 >= best_crossing)
+    if(w.b0 >= best.crossing)
       keep.left_end = w.b0;
-    if(w.b1 <= best_crossing)
+    if(w.b1 <= best.crossing)
       keep.right_start = w.b1;
   }
   return keep;
