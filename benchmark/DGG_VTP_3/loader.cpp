@@ -15,7 +15,8 @@
 //   guarded   dggvtp::load_soup_with_cgal (the path every file took before the fast readers)
 //   CGAL      CGAL::IO::read_polygon_mesh into a Surface_mesh, nothing else
 //   prepare   dggvtp::make_solver on what `load` gave (repairs if any, unfolding, checks)
-// and prints a Markdown table. Run it alone: the times are wall-clock.
+// and prints a Markdown table (peak RSS: of `load` alone, then of load + prepare, of `guarded`, of
+// `CGAL`). Run it alone: the times are wall-clock.
 
 #include <dggvtp/load_mesh.h>
 
@@ -160,11 +161,14 @@ int measure(const std::string& what, const std::string& path)
       std::printf("%.4f %zu\n", load, soup.file_vertices);
       return 0;
     }
+    struct rusage usage;
+    ::getrusage(RUSAGE_SELF, &usage);
+    const double load_rss_mb = double(usage.ru_maxrss) / 1024.;
     t0 = std::chrono::steady_clock::now();
     std::optional<Solver> solver;
     const double repairs = dggvtp::make_solver(soup, solver);
     const double prepare = seconds_since(t0) - repairs;
-    std::printf("%.4f %zu %.4f\n", load + repairs, soup.file_vertices, prepare);
+    std::printf("%.4f %zu %.4f %.1f\n", load + repairs, soup.file_vertices, prepare, load_rss_mb);
   }
   catch(const std::exception& e)
   {
@@ -245,8 +249,8 @@ int main(int argc, char** argv)
 
   const char* self = "/proc/self/exe";
   std::printf("| file | MB | load s | MB/s | guarded (before) s | CGAL read_polygon_mesh s | prepare s | "
-              "peak RSS load+prepare MB | peak RSS guarded MB | peak RSS CGAL MB |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+              "peak RSS load MB | load+prepare MB | guarded MB | CGAL MB |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for(const std::string& name : names)
   {
     const std::string path = (dir / name).string();
@@ -254,11 +258,11 @@ int main(int argc, char** argv)
     const Result ours = run_child(self, "load", path);
     const Result guarded = run_child(self, "guarded", path);
     const Result cgal = run_child(self, "cgal", path);
-    if(ours.values.size() < 3 || guarded.values.empty() || cgal.values.empty())
+    if(ours.values.size() < 4 || guarded.values.empty() || cgal.values.empty())
       return 1;
-    std::printf("| %s | %.1f | %.3f | %.0f | %.2f | %.2f | %.3f | %.0f | %.0f | %.0f |\n", name.c_str(), mb,
+    std::printf("| %s | %.1f | %.3f | %.0f | %.2f | %.2f | %.3f | %.0f | %.0f | %.0f | %.0f |\n", name.c_str(), mb,
                 ours.values[0], mb / ours.values[0], guarded.values[0], cgal.values[0], ours.values[2],
-                ours.peak_rss_mb, guarded.peak_rss_mb, cgal.peak_rss_mb);
+                ours.values[3], ours.peak_rss_mb, guarded.peak_rss_mb, cgal.peak_rss_mb);
     std::fflush(stdout);
   }
   if(!keep)

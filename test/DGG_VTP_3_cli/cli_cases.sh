@@ -566,7 +566,17 @@ case $case in
       run "$work/$f" --output "$work/d.txt"; expect_input_error
     done
     binary_stl deg.stl 1 $f0 $f0 $f0 $f0 $f0 $f0 $f0 $f1 $f0                       # a triangle repeating a point
-    run "$work/deg.stl" --output "$work/d.txt"; expect_input_error ;;
+    run "$work/deg.stl" --output "$work/d.txt"; expect_input_error
+    # counts the bytes cannot hold, in the layouts the fast readers take: refused before allocating
+    for format in binary_little_endian ascii; do
+      printf 'ply\nformat %s 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n' \
+        $format | input huge.ply
+      run "$work/huge.ply" --output "$work/d.txt"; expect_input_error
+      [[ "$err" != *"out of memory"* ]] || fail "$format: $err"
+    done
+    printf 'OFF\n500000000 500000000 0\n0 0 0\n' | input huge.off
+    run "$work/huge.off" --output "$work/d.txt"; expect_input_error
+    [[ "$err" != *"out of memory"* ]] || fail "$err" ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"

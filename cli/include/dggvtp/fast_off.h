@@ -60,6 +60,10 @@ inline bool read_fast_off(const char* begin, const char* end, Fast_soup& soup)
       ++q;
     return q == eol;
   };
+  // the counts must fit in the bytes left ("0 0 0" a vertex, "3 0 1 2" a face at least) before
+  // anything is allocated for them
+  if(5 * vertices + 7 * faces > std::uint64_t(end - p))
+    return false;
   soup.points.reserve(std::size_t(vertices));
   for(std::uint64_t v = 0; v < vertices; ++v)
   {

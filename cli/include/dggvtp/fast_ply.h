@@ -126,6 +126,10 @@ public:
         return false;
     }
 
+    // the counts must fit in the bytes left (at least "0 0 0" a vertex and "3 0 1 2" a face in
+    // ASCII, 12 and 13 bytes in binary) before anything is allocated for them
+    if((ascii ? 5 * vertices + 7 * faces : 12 * vertices + 13 * faces) > std::uint64_t(end - p))
+      return false;
     soup.points.reserve(std::size_t(vertices));
     soup.corners.reserve(3 * std::size_t(faces));
     return ascii ? read_ascii(p, end, vertices, faces, coordinate_size, soup)
