@@ -585,6 +585,7 @@ std::array<std::uint32_t, 3> as_surface_mesh_face(const Polygon& p)
 
 namespace internal {
 
+// a file that does not open gets the same error whichever reader would have read it
 inline void check_readable(const std::string& path)
 {
   errno = 0;
