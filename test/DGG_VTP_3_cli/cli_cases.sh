@@ -72,6 +72,31 @@ cone() {
     for (i = 0; i < 3; ++i) printf "v %.17g %.17g 0\n", r * cos(2 * pi * i / 3), r * sin(2 * pi * i / 3)
     print "v 0 0 0"; print "f 1 2 3\nf 1 3 4\nf 1 4 2\nf 5 3 2\nf 5 4 3\nf 5 2 4" }'
 }
+# sphere: OFF of a closed UV sphere (8 rings of 12), consistently oriented, %.17g coordinates
+sphere() {
+  awk 'BEGIN { pi = atan2(0, -1); n = 8; m = 12; print "OFF"; print 2 + (n - 1) * m, 2 * (n - 1) * m, 0
+    print "0 0 1"
+    for (i = 1; i < n; ++i) for (j = 0; j < m; ++j)
+      printf "%.17g %.17g %.17g\n", sin(pi * i / n) * cos(2 * pi * j / m), sin(pi * i / n) * sin(2 * pi * j / m), cos(pi * i / n)
+    print "0 0 -1"; last = 1 + (n - 1) * m
+    for (j = 0; j < m; ++j) print 3, 0, 1 + j, 1 + (j + 1) % m
+    for (i = 1; i < n - 1; ++i) for (j = 0; j < m; ++j) {
+      a = 1 + (i - 1) * m + j; b = 1 + (i - 1) * m + (j + 1) % m; c = a + m; d = b + m
+      print 3, a, c, d; print 3, a, d, b }
+    for (j = 0; j < m; ++j) print 3, last, 1 + (n - 2) * m + (j + 1) % m, 1 + (n - 2) * m + j }'
+}
+# off_to FORMAT < OFF: the same mesh as obj, obj_slashes (f v/vt/vn), ply (ASCII, double), ply_ushort
+# (a list size type the fast reader leaves to CGAL's)
+off_to() {
+  awk -v to="$1" 'NR == 2 { nv = $1; nf = $2
+      if (to ~ /^ply/) { print "ply\nformat ascii 1.0\ncomment from off_to\nelement vertex " nv
+        print "property double x\nproperty double y\nproperty double z\nelement face " nf
+        print "property list " (to == "ply" ? "uchar" : "ushort") " int vertex_indices\nend_header" } }
+    NR > 2 && NR <= 2 + nv { print (to ~ /^obj/ ? "v " : "") $0 }
+    NR > 2 + nv { if (to ~ /^ply/) { print; next }
+      line = "f"; for (k = 2; k <= NF; ++k) line = line " " ($k + 1) (to == "obj_slashes" ? "/" ($k + 1) "/1" : "")
+      print line }'
+}
 # expect_lines_within TOLERANCE FILE EXPECTED...: the same, to TOLERANCE relative
 expect_lines_within() {
   local tolerance=$1 file=$2; shift 2
@@ -689,6 +714,53 @@ PY
     run "$work/v.off" --source-point 0 0 0 --output "$work/d.txt"; expect_input_error
     # points, but the only source a vertex no face uses
     run "$data/two_components_and_isolated_vertex.off" --source 3 --target-point 0.2 0.2 0; expect_input_error ;;
+  formats_agree)  # the fast readers and CGAL's path (variants the fast readers leave to it) give the same bytes
+    sphere | input s.off
+    run "$work/s.off" --quiet --output "$work/ref.txt"; expect_rc 0
+    [ "$(wc -l < "$work/ref.txt")" -eq 86 ] || fail "not one line per vertex"
+    sed 's/$/\r/' "$work/s.off" > "$work/crlf.off"                                  # fast
+    { head -2 "$work/s.off"; echo '# a comment'; tail -n +3 "$work/s.off"; } > "$work/comment.off"  # CGAL's
+    for v in obj obj_slashes ply ply_ushort; do off_to $v < "$work/s.off" > "$work/$v.${v%%_*}"; done
+    sed 's/$/\r/' "$work/obj.obj" > "$work/crlf.obj"
+    awk '/^v / { print $0 " 1"; next } { print }' "$work/obj.obj" > "$work/w.obj"      # CGAL's: v x y z w
+    for f in crlf.off comment.off obj.obj obj_slashes.obj crlf.obj w.obj ply.ply ply_ushort.ply; do
+      for mode in "" "--epsilon 1e-4"; do
+        run "$work/$f" --quiet $mode --output "$work/d.txt"; expect_rc 0
+        run "$work/s.off" --quiet $mode --output "$work/ref.txt"; expect_rc 0
+        cmp -s "$work/d.txt" "$work/ref.txt" || fail "$f $mode: not the same output as s.off"
+      done
+    done ;;
+  fast_reader_refusals)  # malformed variants of the layouts the fast readers take are still refused
+    sphere | input s.off
+    off_to obj < "$work/s.off" > "$work/s.obj"
+    off_to ply < "$work/s.off" > "$work/s.ply"
+    for f in s.off s.obj s.ply; do
+      head -c -20 "$work/$f" > "$work/cut.${f#s.}"
+      run "$work/cut.${f#s.}" --output "$work/d.txt"; expect_input_error
+    done
+    sed '$ s/.*/3 0 0 1/' "$work/s.off" > "$work/rep.off"                          # a repeated vertex
+    sed '$ s/.*/f 1 2 87/' "$work/s.obj" > "$work/oob.obj"                          # one beyond (CGAL's check lets it through)
+    sed '$ s/.*/f 0 2 3/' "$work/s.obj" > "$work/zero.obj"
+    printf '\tf 1\t2 3\n' | cat "$work/s.obj" - > "$work/tab.obj"                    # reads as 1 and 3: two vertices
+    sed '$ s/.*/300 0 1 2/' "$work/s.ply" > "$work/count.ply"                        # a list size beyond uchar
+    sed '$ s/.*/3 0 1 -1/' "$work/s.ply" > "$work/neg.ply"
+    sed 's/^0 0 1$/1e400 0 1/' "$work/s.off" > "$work/big.off"                        # overflows on reading
+    sed 's/property double/property float/; s/^0 0 1$/1e39 0 1/' "$work/s.ply" > "$work/big.ply"  # overflows a float
+    for f in rep.off oob.obj zero.obj tab.obj count.ply neg.ply big.off big.ply; do
+      run "$work/$f" --output "$work/d.txt"; expect_input_error
+    done
+    binary_stl deg.stl 1 $f0 $f0 $f0 $f0 $f0 $f0 $f0 $f1 $f0                       # a triangle repeating a point
+    run "$work/deg.stl" --output "$work/d.txt"; expect_input_error
+    # counts the bytes cannot hold, in the layouts the fast readers take: refused before allocating
+    for format in binary_little_endian ascii; do
+      printf 'ply\nformat %s 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n' \
+        $format | input huge.ply
+      run "$work/huge.ply" --output "$work/d.txt"; expect_input_error
+      [[ "$err" != *"out of memory"* ]] || fail "$format: $err"
+    done
+    printf 'OFF\n500000000 500000000 0\n0 0 0\n' | input huge.off
+    run "$work/huge.off" --output "$work/d.txt"; expect_input_error
+    [[ "$err" != *"out of memory"* ]] || fail "$err" ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"

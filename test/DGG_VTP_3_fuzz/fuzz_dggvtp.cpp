@@ -12,6 +12,9 @@
 //   bits 3-7  the source: that file vertex, modulo the number of vertices
 // The remaining bytes are the file.
 //
+// A file that one of the fast readers takes is read by CGAL's guarded path too, and both soups
+// must be the same to the bit (check_fast_reader).
+//
 // Allowed outcomes are those of dggvtp's input policy: dggvtp::Input_error (exit status 2) or the
 // library's std::invalid_argument (its documented preconditions), or distances. Everything else
 // aborts, so that libFuzzer keeps the input: another exception (it would reach the user as an
@@ -33,6 +36,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <limits>
 #include <optional>
@@ -96,6 +100,37 @@ void run(dggvtp::Loaded_soup& soup, std::size_t source)
   }
 }
 
+// The fast readers against CGAL's guarded path on the same file: what a fast reader takes, that
+// path must take too, into the same soup to the bit (points, faces and their corners' order).
+void check_fast_reader(const std::string& path)
+{
+  std::optional<dggvtp::internal::Fast_soup> fast =
+    dggvtp::internal::read_fast(path, dggvtp::internal::lower_case_extension(path));
+  if(!fast)
+    return;
+  const std::optional<dggvtp::Loaded_soup> soup = dggvtp::internal::soup_of(*fast);
+  if(!soup)
+    return;
+  dggvtp::Loaded_soup reference;
+  try
+  {
+    reference = dggvtp::load_soup_with_cgal(path);
+  }
+  catch(const dggvtp::Input_error& e)
+  {
+    fail(std::string("a fast reader takes a file CGAL's path refuses: ") + e.what());
+  }
+  if(soup->points.size() != reference.points.size() || soup->file_vertices != reference.file_vertices)
+    fail("a fast reader reads " + std::to_string(soup->points.size()) + " points, CGAL's path " +
+         std::to_string(reference.points.size()));
+  for(std::size_t i = 0; i < soup->points.size(); ++i)
+    for(int c = 0; c < 3; ++c)
+      if(std::memcmp(&soup->points[i][c], &reference.points[i][c], sizeof(double)) != 0)
+        fail("a fast reader reads point " + std::to_string(i) + " differently from CGAL's path");
+  if(soup->triangles != reference.triangles || soup->polygons != reference.polygons)
+    fail("a fast reader reads the faces differently from CGAL's path");
+}
+
 std::string input_path(const char* extension)
 {
   const char* tmp = std::getenv("TMPDIR");
@@ -120,6 +155,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       fail("cannot write " + path);
     std::fclose(file);
   }
+  check_fast_reader(path);
   try
   {
     dggvtp::Loaded_soup soup = dggvtp::load_soup(path);

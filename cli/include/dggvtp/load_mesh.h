@@ -6,6 +6,8 @@
 #ifndef DGGVTP_LOAD_MESH_H
 #define DGGVTP_LOAD_MESH_H
 
+#include <dggvtp/fast_read.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/io.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -31,6 +33,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace dggvtp {
@@ -580,19 +583,80 @@ std::array<std::uint32_t, 3> as_surface_mesh_face(const Polygon& p)
   return {std::uint32_t(p[2]), std::uint32_t(p[0]), std::uint32_t(p[1])};
 }
 
-inline Loaded_soup load_soup(const std::string& path)
+namespace internal {
+
+// a file that does not open gets the same error whichever reader would have read it
+inline void check_readable(const std::string& path)
+{
+  errno = 0;
+  std::ifstream probe(path);
+  if(!probe.good())
+    throw Input_error("cannot read '" + path + "': " + (errno != 0 ? std::strerror(errno) : "cannot open it"));
+}
+
+// the format as CGAL's read_polygon_soup chooses it
+inline std::string lower_case_extension(const std::string& path)
+{
+  std::string extension = path.substr(path.rfind('.') == std::string::npos ? path.size() : path.rfind('.') + 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return extension;
+}
+
+// A fast reader's soup as load_soup_with_cgal() makes it of the same file, or nothing where one
+// of its checks fails (a face repeating a vertex, too many points for 32-bit indices): that path
+// then refuses the file, or takes it, as before. The fast readers already refuse what else it
+// checks (no vertices, a coordinate not finite, a face of fewer than 3 vertices, an index beyond
+// the vertices).
+inline std::optional<Loaded_soup> soup_of(Fast_soup& fast)
+{
+  if(fast.points.size() >= std::numeric_limits<std::uint32_t>::max())
+    return std::nullopt;
+  Loaded_soup soup;
+  if(fast.all_triangles())
+  {
+    soup.triangles.reserve(fast.faces);
+    for(std::size_t c = 0; c < fast.corners.size(); c += 3)
+    {
+      const std::uint32_t* t = &fast.corners[c];
+      if(t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+        return std::nullopt;
+      soup.triangles.push_back(as_surface_mesh_face(t));
+    }
+  }
+  else
+  {
+    soup.polygons.reserve(fast.faces);
+    std::size_t first = 0;
+    for(const std::size_t last : fast.face_ends)
+    {
+      for(std::size_t k = first; k < last; ++k)
+        for(std::size_t j = first; j < k; ++j)
+          if(fast.corners[j] == fast.corners[k])
+            return std::nullopt;
+      soup.polygons.emplace_back(fast.corners.begin() + first, fast.corners.begin() + last);
+      first = last;
+    }
+  }
+  std::vector<std::uint32_t>().swap(fast.corners);
+  soup.points.swap(fast.points);
+  soup.file_vertices = soup.points.size();
+  soup.file_vertex_of.resize(soup.points.size());
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+    soup.file_vertex_of[i] = i;
+  return soup;
+}
+
+} // namespace internal
+
+// The file through CGAL's reader, behind the checks above that keep it from hazardous input: the
+// path of every file the fast readers do not take. Throws Input_error for input it refuses.
+inline Loaded_soup load_soup_with_cgal(const std::string& path)
 {
   Loaded_soup soup;
+  internal::check_readable(path);
   {
-    errno = 0;
-    std::ifstream probe(path);
-    if(!probe.good())
-      throw Input_error("cannot read '" + path + "': " + (errno != 0 ? std::strerror(errno) : "cannot open it"));
-  }
-  {
-    std::string extension = path.substr(path.rfind('.') == std::string::npos ? path.size() : path.rfind('.') + 1);
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string extension = internal::lower_case_extension(path);
     if(extension == "off")
       check_off_declarations(path);
     else if(extension == "ply")
@@ -635,6 +699,19 @@ inline Loaded_soup load_soup(const std::string& path)
     std::vector<std::vector<std::size_t>>().swap(soup.polygons);
   }
   return soup;
+}
+
+// The mesh file `path` as a soup. The common layouts of each format (internal::read_fast) are
+// read in one pass of the file; any other file, and any file that input policy refuses, goes
+// through load_soup_with_cgal(), which gives the same soup for what both read. Throws Input_error
+// for input it refuses.
+inline Loaded_soup load_soup(const std::string& path)
+{
+  internal::check_readable(path);
+  if(std::optional<internal::Fast_soup> fast = internal::read_fast(path, internal::lower_case_extension(path)))
+    if(std::optional<Loaded_soup> soup = internal::soup_of(*fast))
+      return std::move(*soup);
+  return load_soup_with_cgal(path);
 }
 
 // what the repairs work on, when the triangles do not go to the solver as they are
