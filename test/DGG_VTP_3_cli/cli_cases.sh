@@ -536,6 +536,14 @@ case $case in
   needle_at_extreme_coordinates)  # two faces glued into a cone of angle 4.6e-7 at 3e38
     run "$data/needle_at_1e38.stl" --output "$work/d.txt"; expect_input_error
     [[ "$err" == *cone* ]] || fail "$err" ;;
+  edges_below_rounding)  # a closed pair of triangles of edges 6e-39 hung from a unit triangle (fuzzer: ran for ever)
+    for precision in double float; do
+      run "$data/subnormal_pillow.stl" --precision $precision --output "$work/d.txt"; expect_input_error
+      [[ "$err" == *"cannot tell so short an edge from rounding"* ]] || fail "$precision: $err"
+    done
+    # the same shapes at a sane scale are accepted
+    printf 'OFF\n5 4 0\n0 0 1\n0 0 0\n0 1 0\n0 0 0.001\n0 0.001 0\n3 0 1 2\n3 3 4 1\n3 4 3 1\n3 1 0 2\n' | input p.off
+    run "$work/p.off" --quiet --output "$work/d.txt"; [ "$rc" -ne 124 ] || fail "hang" ;;
   # surface
   non_manifold_edge)  # three faces on the edge 0-1
     printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n' | input e.off

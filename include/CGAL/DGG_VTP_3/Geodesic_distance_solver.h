@@ -142,7 +142,8 @@ public:
    *
    * \throws std::invalid_argument if a face is not a triangle, a coordinate is not finite, or a
    *         face is degenerate (zero length edge or zero area), a face is a sliver (an edge more
-   *         than 1e10 times longer than the height on it) or a vertex is the tip of a cone
+   *         than 1e10 times longer than the height on it), an edge is shorter than 1e-3 machine
+   *         epsilons of `FT` times the size of the mesh, or a vertex is the tip of a cone
    *         sharper than 1e-4 radians (a closed fan whose angles add up to less): windows would
    *         wrap around those too many times (see the input policy in the user manual), or
    *         if the mesh has more faces or vertices than 32-bit indices can number (about 1.4e9).

@@ -139,9 +139,10 @@ inline void sort_by_key(std::vector<std::pair<std::uint64_t, std::uint32_t>>& ke
 // Faces along a Z-order (Morton) curve of their centroids: faces near each other in the order are
 // near each other on the surface, so that the propagation's working set is a few compact blocks of
 // memory whatever the order of the user's faces, and a range of faces is a compact patch.
+// `extent` receives the largest side of the bounding box of the vertices the faces use.
 template <class FT>
 std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
-                                                const std::vector<std::uint32_t>& corner_vertex)
+                                                const std::vector<std::uint32_t>& corner_vertex, double& extent)
 {
   const std::size_t nf = corner_vertex.size() / 3;
   const std::size_t nv = xyz.size() / 3;
@@ -149,7 +150,8 @@ std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
   std::vector<char> used(nv, 0);
   for(std::uint32_t v : corner_vertex)
     used[v] = 1;
-  double low[3], high[3], extent = 0.;
+  double low[3], high[3];
+  extent = 0.;
   std::fill(low, low + 3, std::numeric_limits<double>::infinity());
   std::fill(high, high + 3, -std::numeric_limits<double>::infinity());
   for(std::size_t v = 0; v < nv; ++v)
@@ -290,7 +292,8 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   constexpr Index no_halfedge = Unfolded_mesh<FT>::no_halfedge;
   const std::size_t nv = xyz.size() / 3;
   const std::size_t nf = corner_vertex.size() / 3;
-  const std::vector<Index> order = faces_in_space_order(xyz, corner_vertex);
+  double extent = 0.;
+  const std::vector<Index> order = faces_in_space_order(xyz, corner_vertex, extent);
   reorder_faces(order, corner_vertex, opposite);
   out.m_corner_vertex.swap(corner_vertex);
   // corners around each vertex (CSR); the faces' spatial order makes walking them cache-friendly
@@ -304,6 +307,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
 
   // unfold each triangle onto each of its three edges; the area comes from the two shortest edges
   // (errors name the face by the user's index)
+  const double shortest_accepted = CGAL::to_double(Tuning<FT>::min_relative_edge()) * extent;
   for(std::size_t fi = 0; fi < nf; ++fi)
   {
     const std::size_t user_face = order[fi];
@@ -329,6 +333,12 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
       out.m_apex_x[hi] = (ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2]) / len;
       if(!(len > FT(0)) || !CGAL::is_finite(len) || !CGAL::is_finite(out.m_apex_x[hi]))
         throw degenerate();
+      if(CGAL::to_double(len) < shortest_accepted)
+        throw std::invalid_argument("face " + std::to_string(user_face) + " has an edge of length " +
+                                    to_short_string(CGAL::to_double(len)) + " in a mesh " + to_short_string(extent) +
+                                    " across: distances on this mesh cannot tell so short an edge from rounding (at least " +
+                                    to_short_string(CGAL::to_double(Tuning<FT>::min_relative_edge())) +
+                                    " times the mesh's size is accepted)");
       // the edge after the longest one and the one before it meet at the corner opposite it
       if(len > longest)
       {
