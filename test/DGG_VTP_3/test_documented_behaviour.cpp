@@ -84,7 +84,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(open_mesh_border_sources, Config, All_configuratio
   }
 }
 
-BOOST_AUTO_TEST_CASE_TEMPLATE(other_component_is_infinite, Config, All_configurations)
+BOOST_AUTO_TEST_CASE_TEMPLATE(other_component_is_infinite, Config, Analytic_configurations)
 {
   using Mesh = typename Config::Mesh;
   const Mesh mesh = make_mesh<Mesh>(two_components());

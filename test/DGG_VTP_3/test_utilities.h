@@ -14,6 +14,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/Gmpfr.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
@@ -71,6 +72,23 @@ struct Ph_f // Polyhedron_3 without ids, float
 };
 
 using All_configurations = std::tuple<Sm_d, Sm_f, Ph_d, Ph_f>;
+
+// Number types beyond float and double, run where an analytic truth is known: their tolerance is
+// that of the truth, computed in double.
+struct Sm_ld // Surface_mesh, long double
+{
+  using Kernel = CGAL::Simple_cartesian<long double>;
+  using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+  static constexpr double tolerance = 1e-14;
+};
+struct Sm_mpfr // Surface_mesh, CGAL::Gmpfr (default precision set by the module's global fixture)
+{
+  using Kernel = CGAL::Simple_cartesian<CGAL::Gmpfr>;
+  using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+  static constexpr double tolerance = 1e-14;
+  static constexpr long precision = 150; // bits
+};
+using Analytic_configurations = std::tuple<Sm_d, Sm_f, Ph_d, Ph_f, Sm_ld, Sm_mpfr>;
 
 // absolute bound on the distance reported at the source itself
 constexpr double source_tolerance = 1e-12;
@@ -166,7 +184,7 @@ std::vector<double> to_vector(const Mesh& mesh, const Map& map)
 {
   std::vector<double> result;
   for(auto v : vertices(mesh))
-    result.push_back(double(get(map, v)));
+    result.push_back(CGAL::to_double(get(map, v)));
   return result;
 }
 
@@ -250,6 +268,8 @@ template <> inline std::string config_name<Sm_d>() { return "Sm_d"; }
 template <> inline std::string config_name<Sm_f>() { return "Sm_f"; }
 template <> inline std::string config_name<Ph_d>() { return "Ph_d"; }
 template <> inline std::string config_name<Ph_f>() { return "Ph_f"; }
+template <> inline std::string config_name<Sm_ld>() { return "Sm_ld"; }
+template <> inline std::string config_name<Sm_mpfr>() { return "Sm_mpfr"; }
 
 // ---------------------------------------------------------------------------------------------
 // Synthetic meshes
@@ -334,7 +354,7 @@ std::vector<double> euclidean_distances(const Mesh& mesh, std::size_t source_ind
   for(auto v : vertices(mesh))
   {
     const auto& q = get(CGAL::vertex_point, mesh, v);
-    p.push_back({double(q.x()), double(q.y()), double(q.z())});
+    p.push_back({CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())});
   }
   std::vector<double> d;
   for(const auto& q : p)

@@ -13,6 +13,7 @@
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
 #include <CGAL/DGG_VTP_3/internal/Query_builder.h>
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/unfold_input.h>
 #include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
 
@@ -69,10 +70,12 @@ struct Face_index_map_of
  *
  * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, with triangle faces.
  * \tparam GeomTraits a model of `DGGVTPTraits_3`; by default the kernel of the mesh's points.
- *         Its `FT` is the number type of the results (`double`, `float`, or an exact type with
- *         square roots). The propagation runs in `FT`, but at least in `double`: in float,
- *         windows that tie within rounding get trimmed in the wrong order, and the cones lost
- *         that way left vertices unreachable (float is kept for input and output).
+ *         Its `FT` is the number type of the results: `float`, `double`, `long double` or
+ *         `CGAL::Gmpfr` (computing at least at its default precision); exact types with square
+ *         roots are not supported yet (no infinity, no `atan2`). The propagation runs in `FT`, but
+ *         at least in `double`: in float, windows that tie within rounding get trimmed in the
+ *         wrong order, and the cones lost that way left vertices unreachable (float is kept for
+ *         input and output).
  * \tparam VertexIndexMap the type of the vertex index map given to the constructor, by default the
  *         one `CGAL::get_initialized_vertex_index_map()` returns for the mesh.
  * \tparam FaceIndexMap the type of the face index map given to the constructor, by default the
@@ -440,7 +443,7 @@ private:
       for(const auto& t : targets)
       {
         const Computation_FT dt = t.first ? d[t.second] : at_points[t.second];
-        *out++ = FT(dt > query.max_distance ? std::numeric_limits<Computation_FT>::infinity() : dt);
+        *out++ = FT(dt > query.max_distance ? internal::Number_type_math<Computation_FT>::infinity() : dt);
       }
     }
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value)
@@ -448,7 +451,7 @@ private:
       auto labels = parameters::get_parameter(np, internal_np::nearest_source_map_t());
       const std::vector<std::size_t> nearest = nearest_sources(propagation.origins());
       for(std::size_t i = 0; i < m_vertices.size(); ++i)
-        put(labels, m_vertices[i], d[i] < std::numeric_limits<Computation_FT>::infinity() ? nearest[i] : std::size_t(-1));
+        put(labels, m_vertices[i], d[i] < internal::Number_type_math<Computation_FT>::infinity() ? nearest[i] : std::size_t(-1));
     }
     return propagation.statistics();
   }

@@ -11,12 +11,12 @@
 #include <CGAL/DGG_VTP_3/internal/Point_targets.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
 #include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 
 #include <CGAL/Polygon_mesh_processing/locate.h>
 
 #include <array>
 #include <cstddef>
-#include <limits>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -73,7 +73,7 @@ public:
   {
     const Place& place = checked_place(k);
     const Computation_FT d = place.first ? m_distance[place.second] : m_targets[place.second].distance;
-    return FT(d > m_query.max_distance ? std::numeric_limits<Computation_FT>::infinity() : d);
+    return FT(d > m_query.max_distance ? internal::Number_type_math<Computation_FT>::infinity() : d);
   }
 
   /// what the propagation did
@@ -105,7 +105,7 @@ public:
       return to_user(path_from_vertex(place.second), out);
     const Target& a = m_targets[place.second];
     std::vector<Internal_point> path;
-    if(a.origin != no_origin() && a.distance < std::numeric_limits<Computation_FT>::infinity() &&
+    if(a.origin != no_origin() && a.distance < internal::Number_type_math<Computation_FT>::infinity() &&
        a.distance <= m_query.max_distance) // farther points are unreached, as farther vertices
     {
       const Tracer tracer(m_solver->m_mesh);
@@ -171,7 +171,7 @@ private:
   std::vector<Internal_point> path_from_vertex(Index v) const
   {
     std::vector<Internal_point> path;
-    if(m_origin[v] != no_origin() && m_distance[v] < std::numeric_limits<Computation_FT>::infinity())
+    if(m_origin[v] != no_origin() && m_distance[v] < internal::Number_type_math<Computation_FT>::infinity())
     {
       path.push_back(Tracer(m_solver->m_mesh).vertex_point(v, first_face(v)));
       trace_from(v, path);

@@ -6,11 +6,11 @@
 #ifndef CGAL_DGG_VTP_3_INTERNAL_DISTANCE_BOUND_H
 #define CGAL_DGG_VTP_3_INTERNAL_DISTANCE_BOUND_H
 
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace CGAL {
 namespace DGG_VTP_3 {
@@ -26,7 +26,7 @@ namespace internal {
 template <class FT>
 FT distance_bound(const Vec2<FT>& source, FT b0, FT b1, FT relay_left, FT relay_right, FT eps)
 {
-  const FT inf = std::numeric_limits<FT>::infinity();
+  const FT inf = Number_type_math<FT>::infinity();
   const FT l0 = (std::max)(relay_left, relay_right);
   const FT l1 = (std::min)(relay_left, relay_right);
   if(!(l1 > FT(0)))
@@ -34,9 +34,9 @@ FT distance_bound(const Vec2<FT>& source, FT b0, FT b1, FT relay_left, FT relay_
   const Vec2<FT> r0{b0 - source.x, -source.y};
   const Vec2<FT> r1{b1 - source.x, -source.y};
   const FT cos_opening = dot(r0, r1) / (length(r0) * length(r1));
-  using std::sqrt;
+  using Math = Number_type_math<FT>;
   // c2: the point of the shorter relay's ray at distance l0; d = |c0 c2|
-  const FT d = l0 * sqrt((std::max)(FT(0), FT(2) - FT(2) * cos_opening));
+  const FT d = l0 * Math::sqrt((std::max)(FT(0), FT(2) - FT(2) * cos_opening));
   if(!(d < l0))
     return inf;
   const FT alpha = l1 / l0;
@@ -49,7 +49,7 @@ FT distance_bound(const Vec2<FT>& source, FT b0, FT b1, FT relay_left, FT relay_
     const FT disc = q * q - q - FT(2) * eps * l0 * (l0 - d) / (d * d);
     if(disc >= FT(0))
     {
-      const FT mu = q - sqrt(disc);
+      const FT mu = q - Math::sqrt(disc);
       if(mu > FT(0) && mu < FT(1))
         beta = mu;
     }

@@ -7,6 +7,7 @@
 #define CGAL_DGG_VTP_3_INTERNAL_PATH_TRACER_H
 
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
 #include <CGAL/number_type_config.h>
@@ -15,7 +16,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -119,16 +119,14 @@ private:
   void walk(Index h, Point p, Point d, FT length, bool from_corner, Index end_vertex, const Path_point& end_point,
             std::vector<Path_point>& out) const
   {
-    using std::atan2;
-    using std::cos;
-    using std::sin;
+    using Math = Number_type_math<FT>;
     d = Point{d.x / length_of(d), d.y / length_of(d)};
     Index entry = from_corner ? h : Mesh::no_halfedge; // from a corner: leave through the opposite edge
-    const FT tolerance = FT(1024) * std::numeric_limits<FT>::epsilon();
+    const FT tolerance = FT(1024) * Math::machine_epsilon();
     for(std::size_t steps = 0; steps <= 3 * m_mesh.number_of_faces(); ++steps)
     {
       // the edge of the face of h the ray leaves through: the nearest crossing ahead
-      FT best_t = std::numeric_limits<FT>::infinity();
+      FT best_t = Math::infinity();
       Index exit = Mesh::no_halfedge;
       FT exit_u(0);
       const Point corner[3] = {Point{FT(0), FT(0)}, Point{m_mesh.length(h), FT(0)}, m_mesh.apex(h)};
@@ -172,7 +170,7 @@ private:
         Point back{-d.x, -d.y}, at{q.x, q.y};
         change_frame(h, cw, at, back);
         const FT theta = m_mesh.angle_sum(w);
-        const FT back_angle = m_mesh.corner_start_angle(cw) + atan2(back.y, back.x);
+        const FT back_angle = m_mesh.corner_start_angle(cw) + Math::atan2(back.y, back.x);
         FT phi = back_angle + FT(CGAL_PI);
         if(m_mesh.is_singular(w))
         {
@@ -191,7 +189,7 @@ private:
         const FT local = phi - m_mesh.corner_start_angle(next_corner);
         h = next_corner;
         p = Point{FT(0), FT(0)};
-        d = Point{cos(local), sin(local)};
+        d = Point{Math::cos(local), Math::sin(local)};
         entry = h;
         from_corner = true;
         continue;

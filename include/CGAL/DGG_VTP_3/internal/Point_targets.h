@@ -10,12 +10,12 @@
 #include <CGAL/DGG_VTP_3/internal/Surface_point.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -175,7 +175,7 @@ public:
   }
 
 private:
-  static FT infinity() { return std::numeric_limits<FT>::infinity(); }
+  static FT infinity() { return Number_type_math<FT>::infinity(); }
   static FT cross_product(const Point& a, const Point& b) { return internal::cross(a, b); }
   static Point position(const std::array<FT, 3>& b, const Point* corner)
   {

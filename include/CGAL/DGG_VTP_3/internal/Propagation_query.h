@@ -7,9 +7,9 @@
 #define CGAL_DGG_VTP_3_INTERNAL_PROPAGATION_QUERY_H
 
 #include <CGAL/DGG_VTP_3/internal/Surface_point.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -26,7 +26,7 @@ struct Propagation_query
   std::vector<Index> vertex_sources;
   std::vector<Surface_point<FT>> point_sources;
   std::vector<Index> source_numbers;          // per vertex source, then per point source: its number in the user's range
-  FT max_distance = std::numeric_limits<FT>::infinity(); // stop there; farther vertices are unreached
+  FT max_distance = Number_type_math<FT>::infinity(); // stop there; farther vertices are unreached
   // stop once these are final (none: the whole field)
   std::vector<Index> vertex_targets;
   std::vector<Surface_point<FT>> point_targets;

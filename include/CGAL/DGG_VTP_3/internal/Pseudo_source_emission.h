@@ -10,6 +10,7 @@
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/Window_construction.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
 #include <algorithm>
@@ -128,7 +129,7 @@ private:
     }
     if(width < FT(0))
       return;
-    from = std::fmod(from, theta);
+    from = Number_type_math<FT>::fmod(from, theta);
     if(from < FT(0))
       from += theta;
     // the cone is [from, from + width] on the circle of length theta; corners in turning order

@@ -8,12 +8,12 @@
 
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 
 #include <CGAL/for_each.h>
 
 #include <algorithm>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -67,7 +67,7 @@ public:
 
   Round_scheduler(const Patch_partition<FT>& partition, std::size_t number_of_vertices)
     : m_partition(partition)
-    , m_committed(number_of_vertices, std::numeric_limits<FT>::infinity())
+    , m_committed(number_of_vertices, Number_type_math<FT>::infinity())
     , m_outbox(partition.size(), std::vector<Outbox>(partition.size()))
     , m_recipients(partition.size())
     , m_senders(partition.size())
@@ -108,17 +108,17 @@ public:
     std::vector<Index> active;
     for(;;)
     {
-      FT nearest = std::numeric_limits<FT>::infinity();
+      FT nearest = Number_type_math<FT>::infinity();
       active.clear();
       const FT stop = propagation.stop_limit();
       for(Index p = 0; p < m_partition.size(); ++p)
       {
         const FT queued = propagation.nearest_queued(p);
         nearest = (std::min)(nearest, queued);
-        if(propagation.has_lists_to_propagate(p) || (queued < std::numeric_limits<FT>::infinity() && queued <= stop))
+        if(propagation.has_lists_to_propagate(p) || (queued < Number_type_math<FT>::infinity() && queued <= stop))
           active.push_back(p);
       }
-      if(active.empty() && (stop < std::numeric_limits<FT>::infinity() || !propagation.schedule_stranded_lists(active)))
+      if(active.empty() && (stop < Number_type_math<FT>::infinity() || !propagation.schedule_stranded_lists(active)))
         break;
       const FT limit = (std::min)(nearest + m_partition.band(), stop);
       CGAL::for_each<ConcurrencyTag>(active, [&](Index p) { propagation.run_round(p, limit); return true; });

@@ -6,11 +6,12 @@
 #ifndef CGAL_DGG_VTP_3_INTERNAL_TUNING_H
 #define CGAL_DGG_VTP_3_INTERNAL_TUNING_H
 
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
+
 #include <CGAL/number_type_config.h>
 
 #include <cmath>
 #include <cstddef>
-#include <limits>
 
 namespace CGAL {
 namespace DGG_VTP_3 {
@@ -31,20 +32,20 @@ struct Tuning
 
   // Radians added on both sides of a pseudo-source's fan (the paper says sqrt(epsilon); the
   // reference code 3 sqrt(epsilon) of its remapped epsilon).
-  static FT fan_half_width(FT accuracy) { using std::sqrt; return FT(3) * sqrt(bound_epsilon(accuracy)); }
+  static FT fan_half_width(FT accuracy) { return FT(3) * Number_type_math<FT>::sqrt(bound_epsilon(accuracy)); }
 
   // ---- rounding ------------------------------------------------------------------------------
 
   // Ties within this (relative to `scale`) are ties: distances are not compared more finely
   // than rounding allows.
-  static FT rounding_margin(FT scale) { return FT(64) * std::numeric_limits<FT>::epsilon() * scale; }
+  static FT rounding_margin(FT scale) { return FT(64) * Number_type_math<FT>::machine_epsilon() * scale; }
 
   // Radians by which a saddle's shadow cone is widened for rounding (emitting more is safe).
-  static FT shadow_widening() { using std::sqrt; return FT(8) * sqrt(rounding_margin(FT(1))); }
+  static FT shadow_widening() { return FT(8) * Number_type_math<FT>::sqrt(rounding_margin(FT(1))); }
 
   // Slopes of distance differences come from distances minus sigma, which cancellation may
   // cost up to sqrt(machine epsilon) of.
-  static FT slope_slack() { using std::sqrt; return sqrt(std::numeric_limits<FT>::epsilon()); }
+  static FT slope_slack() { return Number_type_math<FT>::sqrt(Number_type_math<FT>::machine_epsilon()); }
 
   // A vertex whose angle sum is below 2 pi by less than this (relative) is treated as a saddle
   // (see Unfolded_mesh: leaning towards saddles is the safe side).

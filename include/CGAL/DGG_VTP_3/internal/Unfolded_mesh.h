@@ -7,6 +7,7 @@
 #define CGAL_DGG_VTP_3_INTERNAL_UNFOLDED_MESH_H
 
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
 #include <CGAL/number_utils.h>
@@ -64,7 +65,7 @@ public:
   // total angle around `v` (2*pi for a flat interior vertex), in radians
   FT angle_sum(Index v) const { return m_angle_sum[v]; }
   // the angle of the corner of halfedge `h` at its source
-  FT corner_angle(Index h) const { using std::atan2; const Vec2<FT> c = apex(h); return atan2(c.y, c.x); }
+  FT corner_angle(Index h) const { const Vec2<FT> c = apex(h); return Number_type_math<FT>::atan2(c.y, c.x); }
   // polar angle at source(h) of the direction of `h`; the corner of `h` spans
   // [corner_start_angle(h), corner_start_angle(h) + corner_angle(h)], corners in turning order
   FT corner_start_angle(Index h) const { return m_corner_start_angle[h]; }
@@ -326,8 +327,8 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
       const FT* c = p[(k + 2) % 3];
       const FT ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
       const FT ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-      using std::sqrt;
-      const FT len = sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
+      using Math = Number_type_math<FT>;
+      const FT len = Math::sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
       const Index hi = Index(3 * fi + k);
       out.m_length[hi] = len;
       out.m_apex_x[hi] = (ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2]) / len;
@@ -347,7 +348,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
         const FT u[3] = {a[0] - o[0], a[1] - o[1], a[2] - o[2]};
         const FT v[3] = {b[0] - o[0], b[1] - o[1], b[2] - o[2]};
         const FT n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-        twice_area = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        twice_area = Math::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
       }
     }
     out.m_twice_area[fi] = twice_area;

@@ -9,9 +9,9 @@
 #include <CGAL/DGG_VTP_3/internal/Distance_bound.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
-#include <limits>
 
 namespace CGAL {
 namespace DGG_VTP_3 {
@@ -40,7 +40,7 @@ inline Window<FT> window_from_point(const Unfolded_mesh<FT>& mesh, typename Unfo
   w.relay_left = relay_left;
   w.relay_right = relay_right;
   w.d_max = bound_epsilon > FT(0) ? distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, bound_epsilon)
-                                  : std::numeric_limits<FT>::infinity();
+                                  : Number_type_math<FT>::infinity();
   w.origin = origin;
   return w;
 }

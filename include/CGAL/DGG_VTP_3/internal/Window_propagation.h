@@ -20,6 +20,7 @@
 #include <CGAL/DGG_VTP_3/internal/Window_lists.h>
 #include <CGAL/DGG_VTP_3/internal/Window_pruning.h>
 #include <CGAL/DGG_VTP_3/internal/early_termination.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
 #include <boost/heap/d_ary_heap.hpp>
@@ -28,7 +29,6 @@
 #include <cmath>
 #include <deque>
 #include <functional>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -79,7 +79,7 @@ public:
       m_patches.emplace_back(k, partition.first_face(k), partition.end_face(k, mesh.number_of_faces()));
   }
 
-  static FT infinity() { return std::numeric_limits<FT>::infinity(); }
+  static FT infinity() { return Number_type_math<FT>::infinity(); }
 
   // The distance to the nearest of the sources: they all start at 0 and emit all around (lines
   // 1-8), as far as the query needs.
@@ -254,8 +254,7 @@ private:
     if(m_scheduler.template hand_off<typename Scheduler::Relax_message>(p.id, m_partition.owner(v), v, d, corner,
                                                                          direction, origin))
       return;
-    using std::atan2;
-    const FT back = m_mesh.corner_start_angle(corner) + atan2(direction.y, direction.x);
+    const FT back = m_mesh.corner_start_angle(corner) + Number_type_math<FT>::atan2(direction.y, direction.x);
     const FT dv = m_distance[v];
     Incoming_directions<FT>& in = m_incoming[v];
     if(d < dv - T::rounding_margin(dv) || dv == infinity())

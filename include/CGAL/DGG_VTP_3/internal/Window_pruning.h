@@ -8,11 +8,11 @@
 
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -49,7 +49,7 @@ inline void shrink_to(const Window<FT>& w, FT t, FT& end)
 template <class FT>
 inline bool trim_by_end_vertices(Window<FT>& w, FT len, FT da, FT db)
 {
-  const FT inf = std::numeric_limits<FT>::infinity();
+  const FT inf = Number_type_math<FT>::infinity();
   const FT sx = w.source.x;
   const FT ss = sx * sx + w.source.y * w.source.y;
   if(da < inf)
@@ -100,14 +100,14 @@ template <class FT>
 inline Best_toward_apex<FT> best_toward_apex(const std::vector<Window<FT>>& windows, const Vec2<FT>& c,
                                              std::vector<Toward_apex<FT>>& toward_apex)
 {
-  Best_toward_apex<FT> best{nullptr, std::numeric_limits<FT>::infinity(), FT(0)};
+  Best_toward_apex<FT> best{nullptr, Number_type_math<FT>::infinity(), FT(0)};
   toward_apex.resize(windows.size());
   for(std::size_t i = 0; i < windows.size(); ++i)
   {
     const Window<FT>& w = windows[i];
     Toward_apex<FT>& t = toward_apex[i];
     const FT x = t.crossing = x_axis_crossing(w.source, c);
-    t.distance = std::numeric_limits<FT>::infinity();
+    t.distance = Number_type_math<FT>::infinity();
     if(w.b0 <= x && x <= w.b1)
     {
       const FT d = t.distance = w.distance_to(c);
@@ -143,7 +143,7 @@ inline Sides<FT> sides_of_best_path(const Window<FT>& w, const Toward_apex<FT>& 
                                     const Best_toward_apex<FT>& best, FT tolerance)
 {
   using Point = Vec2<FT>;
-  const FT inf = std::numeric_limits<FT>::infinity();
+  const FT inf = Number_type_math<FT>::infinity();
   const bool lights_apex = t.distance < inf;
   FT to_c = t.distance;
   if(!lights_apex)
@@ -203,10 +203,11 @@ inline int equal_distance_points(const Window<FT>& u, const Window<FT>& w, FT lo
   const FT c = C * C - d2 * (xw * xw + yw * yw);
   int n = 0;
   auto keep = [&](FT t) { if(lo < t && t < hi) out[n++] = t; };
-  const FT scale = (std::max)((std::abs)(a), (std::max)((std::abs)(b), (std::abs)(c)));
+  using Math = Number_type_math<FT>;
+  const FT scale = (std::max)(Math::abs(a), (std::max)(Math::abs(b), Math::abs(c)));
   if(!(scale > FT(0)))
     return 0;
-  if((std::abs)(a) <= Tuning<FT>::rounding_margin(scale))
+  if(Math::abs(a) <= Tuning<FT>::rounding_margin(scale))
   {
     if(b != FT(0))
       keep(-c / b);
@@ -215,8 +216,7 @@ inline int equal_distance_points(const Window<FT>& u, const Window<FT>& w, FT lo
   const FT disc = b * b - FT(4) * a * c;
   if(disc < FT(0))
     return 0;
-  using std::sqrt;
-  const FT q = -(b + (b < FT(0) ? -sqrt(disc) : sqrt(disc))) / FT(2);
+  const FT q = -(b + (b < FT(0) ? -Math::sqrt(disc) : Math::sqrt(disc))) / FT(2);
   keep(q / a);
   if(q != FT(0))
     keep(c / q);

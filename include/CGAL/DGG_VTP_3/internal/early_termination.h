@@ -8,10 +8,10 @@
 
 #include <CGAL/DGG_VTP_3/internal/Point_targets.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 
 #include <algorithm>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -36,7 +36,7 @@ FT early_termination_limit(const Propagation_query<FT>& query, const Point_targe
       targets = (std::max)(targets, distance[v]);
     limit = (std::min)(limit, targets);
   }
-  return limit < std::numeric_limits<FT>::infinity() ? limit + FT(2) * band : limit;
+  return limit < Number_type_math<FT>::infinity() ? limit + FT(2) * band : limit;
 }
 
 } // namespace internal

@@ -6,6 +6,8 @@
 #ifndef CGAL_DGG_VTP_3_INTERNAL_PLANAR_GEOMETRY_H
 #define CGAL_DGG_VTP_3_INTERNAL_PLANAR_GEOMETRY_H
 
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -26,7 +28,7 @@ struct Vec2
 template <class FT> inline Vec2<FT> operator-(const Vec2<FT>& a, const Vec2<FT>& b) { return {a.x - b.x, a.y - b.y}; }
 template <class FT> inline FT dot(const Vec2<FT>& a, const Vec2<FT>& b) { return a.x * b.x + a.y * b.y; }
 template <class FT> inline FT cross(const Vec2<FT>& a, const Vec2<FT>& b) { return a.x * b.y - a.y * b.x; }
-template <class FT> inline FT length(const Vec2<FT>& a) { using std::sqrt; return sqrt(dot(a, a)); }
+template <class FT> inline FT length(const Vec2<FT>& a) { return Number_type_math<FT>::sqrt(dot(a, a)); }
 
 template <class FT>
 inline FT clamp01(FT t)
