@@ -76,7 +76,8 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
 
   MESH                   a mesh file CGAL reads: OFF, OBJ, PLY, STL (as dggvtp reads it)
   --sources S            FILE: 0-based vertex indices in the file's order, separated by white
-                         space, one row each in that order (no duplicates, at least one);
+                         space, one row each in that order (no duplicates, at least one;
+                         a file named all: ./all);
                          all: every vertex, in order; fps:K: K vertices by farthest-point
                          sampling (vertex 0 first, then each time the vertex farthest from those
                          chosen, the smallest index on ties; unreachable vertices are the
@@ -94,10 +95,10 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
                          computes only the missing rows; a different command (mesh, epsilon,
                          precision, dtype, sources) is refused; removed at the end
   --sources-output FILE  the source vertex of each row, one per line (useful with fps:K)
-  --stats FILE           one JSON object: sizes, rows computed and resumed, times, peak memory
-                         per process
+  --stats FILE           one JSON object: sizes, rows computed and resumed, times, and per
+                         process its peak memory, CPU time and time on its own rows
   --progress             rows done / total, rate and time left on stderr (the default when
-                         stderr is a terminal)
+                         stderr is a terminal; under mpirun, whose output is a pipe, ask for it)
   --quiet                no summary, no warnings, no progress
   --help                 this text
 
@@ -487,6 +488,7 @@ struct Resume
   std::vector<unsigned char> done; // per row
   Fps_state fps;                   // fps:K only
   std::vector<std::string> notes;  // warnings for the user
+  dggvtp::Directory_lock lock;     // held by rank 0 for the whole run
 };
 
 // Rank 0: opens the checkpoint, or creates it. Returns the done rows.
@@ -501,6 +503,7 @@ Resume open_checkpoint(const Checkpoint& checkpoint, const std::string& fingerpr
   {
     if(!S_ISDIR(info.st_mode))
       throw Input_error("the checkpoint '" + checkpoint.directory + "' is not a directory");
+    resume.lock = dggvtp::Directory_lock(checkpoint.directory);
     std::string recorded;
     if(read_whole_file(checkpoint.fingerprint(), recorded))
     {
@@ -545,6 +548,8 @@ Resume open_checkpoint(const Checkpoint& checkpoint, const std::string& fingerpr
   }
   else if(::mkdir(checkpoint.directory.c_str(), 0777) != 0)
     throw Input_error("cannot create the checkpoint directory '" + checkpoint.directory + "': " + std::strerror(errno));
+  else
+    resume.lock = dggvtp::Directory_lock(checkpoint.directory);
 
   if(fresh)
   {
@@ -818,6 +823,15 @@ private:
   std::thread m_thread; // last: starts once the rest is ready
 };
 
+// CPU time of this process so far (all its threads, user + system), in seconds
+double cpu_seconds()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
 double peak_rss_mb()
 {
   rusage usage;
@@ -903,8 +917,9 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     if(options.help)
       return;
     struct stat info;
-    if(::stat(options.output.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
-      throw Input_error("cannot write '" + options.output + "': it is a directory");
+    if(::stat(options.output.c_str(), &info) == 0 && !S_ISREG(info.st_mode))
+      throw Input_error("cannot write '" + options.output + "': it exists and is not a regular file (the output " +
+                        "is renamed into place)");
     const Clock::time_point t0 = Clock::now();
     one.soup = std::make_shared<dggvtp::Loaded_soup>(dggvtp::load_soup(options.mesh));
     one.file_vertices = one.soup->file_vertices;
@@ -973,6 +988,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   const bool show_progress = root && !options.quiet && (options.progress || ::isatty(2));
   const Clock::time_point t_compute = Clock::now();
   std::size_t computed = 0; // by this rank
+  double seconds_own = 0.;  // this rank's rows, without waiting for the others
   try
   {
     std::atomic<std::size_t> durable(already_done); // fps: rows done, for the progress line
@@ -1022,6 +1038,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
         }
         sink.flush();
       }
+      seconds_own = seconds_since(t_compute);
       comm.idle_barrier();
       std::string chosen_bytes;
       if(root)
@@ -1062,6 +1079,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
       });
       sink.flush();
       computed = mine.size();
+      seconds_own = seconds_since(t_compute);
       comm.idle_barrier();
     }
   }
@@ -1078,6 +1096,8 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
 
   // 4. rank 0: every row recorded? then the output
   const std::vector<double> rss = comm.gather(peak_rss_mb());
+  const std::vector<double> cpu = comm.gather(cpu_seconds());
+  const std::vector<double> compute_seconds = comm.gather(seconds_own);
   const std::vector<double> computed_per_rank = comm.gather(double(computed));
   status = collectively(comm, [&] {
     if(!root)
@@ -1107,7 +1127,17 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   for(double c : computed_per_rank)
     computed_total += std::size_t(c);
   const double seconds_total = seconds_since(t_start);
-  std::string rss_list, rss_json;
+  const auto json_list = [](const std::vector<double>& values, const char* format) {
+    std::string out;
+    for(double v : values)
+    {
+      char text[32];
+      std::snprintf(text, sizeof text, format, v);
+      out += (out.empty() ? "" : ", ") + std::string(text);
+    }
+    return out;
+  };
+  std::string rss_list;
   double rss_max = 0.;
   for(double r : rss)
   {
@@ -1119,17 +1149,22 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   const char* dtype = options.dtype == Npy_dtype::float32 ? "float32" : "float64";
   if(!options.stats.empty())
   {
-    char text[1024];
-    std::snprintf(text, sizeof text,
+    const auto format = [&](char* text, std::size_t size) {
+      return std::snprintf(text, size,
                   "{\"mesh\": %s, \"vertices\": %zu, \"faces\": %zu, \"rows\": %zu, \"rows_computed\": %zu, "
                   "\"rows_resumed\": %zu, \"ranks\": %d, \"threads\": %ld, \"epsilon\": %.17g, \"precision\": \"%s\", "
                   "\"dtype\": \"%s\", \"seconds_load\": %.6f, \"seconds_prepare\": %.6f, \"seconds_compute\": %.6f, "
-                  "\"seconds_total\": %.6f, \"peak_rss_mb\": [%s]}\n",
+                  "\"seconds_total\": %.6f, \"peak_rss_mb\": [%s], \"cpu_seconds\": [%s], "
+                  "\"seconds_compute_per_rank\": [%s]}\n",
                   json_string(options.mesh).c_str(), one.file_vertices, one.prepared.faces, sources.rows,
                   computed_total, already_done, comm.size(), options.threads, options.epsilon,
                   options.precision.c_str(), dtype, one.seconds_load, one.prepared.seconds_prepare, seconds_compute,
-                  seconds_total, rss_list.c_str());
-    dggvtp::write_file_atomically(options.stats, text); // only rank 0 is left: no collective call
+                  seconds_total, rss_list.c_str(), json_list(cpu, "%.3f").c_str(),
+                  json_list(compute_seconds, "%.3f").c_str());
+    };
+    std::vector<char> text(std::size_t(format(nullptr, 0)) + 1);
+    format(text.data(), text.size());
+    dggvtp::write_file_atomically(options.stats, text.data()); // only rank 0 is left: no collective call
   }
   if(!options.quiet)
     std::cout << "dggvtp-batch: " << options.mesh << ": " << one.file_vertices << " vertices, " << one.prepared.faces
@@ -1137,7 +1172,8 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
               << "  " << sources.rows << " sources (" << sources.identity << "), "
               << (options.epsilon > 0. ? "DGG-VTP epsilon " + std::to_string(options.epsilon) : std::string("exact (VTP)"))
               << ", " << options.precision << ", " << dtype << "\n"
-              << "  " << comm.size() << (comm.size() == 1 ? " process" : " processes") << " x " << options.threads
+              << "  " << comm.size() << (comm.size() == 1 ? " process" : " processes") << " x "
+              << (options.threads == 0 ? std::string("all cores'") : std::to_string(options.threads))
               << (options.threads == 1 ? " thread" : " threads") << ": computed " << computed_total << " rows"
               << (already_done > 0 ? " (" + std::to_string(already_done) + " were done before)" : std::string()) << "\n"
               << "  load " << one.seconds_load << " s, prepare " << one.prepared.seconds_prepare << " s, rows "

@@ -22,6 +22,7 @@
 
 #include <dirent.h>
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <unistd.h>
@@ -337,6 +338,44 @@ public:
 
 private:
   std::string m_path;
+  int m_fd = -1;
+};
+
+// An exclusive lock (flock) on a directory, held until destruction: a second run on the same
+// checkpoint fails at once instead of writing into it too. (flock is advisory and, on some
+// network file systems, local to a node.)
+class Directory_lock
+{
+public:
+  Directory_lock() = default;
+  explicit Directory_lock(const std::string& directory)
+  {
+    m_fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if(m_fd < 0)
+      throw Input_error("cannot open '" + directory + "': " + system_error_text(errno));
+    if(::flock(m_fd, LOCK_EX | LOCK_NB) != 0)
+    {
+      const int error = errno;
+      ::close(m_fd);
+      m_fd = -1;
+      if(error == EWOULDBLOCK)
+        throw Input_error("another dggvtp-batch is running on the checkpoint '" + directory + "'");
+      throw Input_error("cannot lock '" + directory + "': " + system_error_text(error));
+    }
+  }
+  Directory_lock(Directory_lock&& other) noexcept : m_fd(other.m_fd) { other.m_fd = -1; }
+  Directory_lock& operator=(Directory_lock&& other) noexcept
+  {
+    std::swap(m_fd, other.m_fd);
+    return *this;
+  }
+  ~Directory_lock()
+  {
+    if(m_fd >= 0)
+      ::close(m_fd);
+  }
+
+private:
   int m_fd = -1;
 };
 
