@@ -3,7 +3,7 @@
 # usage: scripts/install_dependencies.sh [--benchmark]   (--benchmark adds python3 and matplotlib)
 set -euo pipefail
 packages=(g++ cmake make libcgal-dev libgmp-dev libmpfr-dev libboost-dev libboost-graph-dev
-          libboost-test-dev libeigen3-dev libtbb-dev libfast-float-dev)
+          libboost-test-dev libeigen3-dev libtbb-dev libfast-float-dev libopenmpi-dev openmpi-bin)
 if [ "${1:-}" = "--benchmark" ]; then
   packages+=(python3 python3-matplotlib)
 fi

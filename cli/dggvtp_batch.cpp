@@ -1,0 +1,1218 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+// dggvtp-batch: the geodesic distances from many source vertices of a mesh file to all its
+// vertices, one row per source, into one NumPy .npy file; over TBB's threads on one machine and
+// over the ranks of an MPI job, resumable after a kill. The contract is in README.md and in
+// `dggvtp-batch --help`.
+//
+// How a run goes (every rank, unless said otherwise):
+//  1. parse the options, load the mesh, read the sources, build the solver (as dggvtp does);
+//  2. rank 0 opens the checkpoint directory (creating it, or checking that it was made by the
+//     same command and reading which rows are done) and tells the other ranks the done rows;
+//  3. each rank computes its share of the missing rows (row i of the missing ones goes to rank
+//     i mod R), spread over its threads; each row is written at its offset in the checkpoint's
+//     copy of the output (MPI-IO under MPI), made durable, and only then recorded as done;
+//     fps:K is sequential (each source depends on the previous rows): rank 0 computes every row,
+//     each propagation on its threads, and the other ranks wait;
+//  4. rank 0 checks that every row is recorded, renames the file to the output and removes the
+//     checkpoint.
+// The bytes of a row do not depend on who computes it: each is the same sequential propagation
+// (or the parallel one, which gives the same bits) as `dggvtp --source N`.
+
+#include <dggvtp/batch_io.h>
+#include <dggvtp/load_mesh.h>
+#include <dggvtp/npy.h>
+
+#include <CGAL/DGG_VTP_3.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <atomic>
+#include <charconv>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <new>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using dggvtp::Input_error;
+using dggvtp::Npy_dtype;
+
+const char* const usage_text = R"(usage: dggvtp-batch MESH --sources FILE|all|fps:K --output OUT.npy [options]
+
+Geodesic distances on the surface of a triangle mesh from many source vertices: one row per
+source, one column per vertex of the file, the values `dggvtp --source N` prints, in a NumPy
+.npy file. Under `mpirun -np R` the sources are shared among the R processes.
+
+  MESH                   a mesh file CGAL reads: OFF, OBJ, PLY, STL (as dggvtp reads it)
+  --sources S            FILE: 0-based vertex indices in the file's order, separated by white
+                         space, one row each in that order (no duplicates, at least one;
+                         a file named all: ./all);
+                         all: every vertex, in order; fps:K: K vertices by farthest-point
+                         sampling (vertex 0 first, then each time the vertex farthest from those
+                         chosen, the smallest index on ties; unreachable vertices are the
+                         farthest), sequential: rank 0 computes every row
+  --output OUT.npy       the .npy file (C order, shape (sources, vertices)); it appears only
+                         when every row is in it
+  --dtype D              float64 (default) or float32: the element type of the .npy
+  --exact                exact distances (VTP algorithm); the default
+  --epsilon E            DGG-VTP with accuracy E >= 0 (E = 0 is --exact)
+  --precision P          double (default) or float: the number type of the computation
+  --threads T            threads per process, 0 = all cores (default 1): the sources are shared
+                         among them (fps:K: each propagation runs on them); same bytes for any T
+  --checkpoint DIR       where the rows written so far and the record of the done rows live
+                         (default OUT.npy.checkpoint); the same command run again after a kill
+                         computes only the missing rows; a different command (mesh, epsilon,
+                         precision, dtype, sources) is refused; removed at the end
+  --sources-output FILE  the source vertex of each row, one per line (useful with fps:K)
+  --stats FILE           one JSON object: sizes, rows computed and resumed, times, and per
+                         process its peak memory, CPU time and time on its own rows
+  --progress             rows done / total, rate and time left on stderr (the default when
+                         stderr is a terminal; under mpirun, whose output is a pipe, ask for it)
+  --quiet                no summary, no warnings, no progress
+  --help                 this text
+
+Exit status: 0 success, 1 bad usage, 2 bad input (unreadable mesh, bad source list, checkpoint
+of another command, write error), with one line on stderr starting with 'error:'.
+)";
+
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// =============================================================================================
+// Options
+// =============================================================================================
+
+struct Options
+{
+  std::string mesh;
+  std::string sources;          // FILE, all or fps:K
+  std::string output;           // the .npy file
+  std::string checkpoint;       // default output + ".checkpoint"
+  std::string sources_output;   // optional
+  std::string stats;            // optional
+  Npy_dtype dtype = Npy_dtype::float64;
+  double epsilon = 0.;
+  std::string precision = "double";
+  long threads = 1;             // per process, 0 = all cores
+  bool progress = false;        // forced on by --progress
+  bool quiet = false;
+  bool help = false;
+};
+
+template <class T>
+T parse_number(const std::string& option, const std::string& text)
+{
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  T value{};
+  if(std::is_floating_point<T>::value)
+    value = T(std::strtod(begin, &end));
+  else if(!text.empty() && text[0] != '-' && text[0] != '+' && !std::isspace(static_cast<unsigned char>(text[0])))
+    value = T(std::strtoull(begin, &end, 10));
+  if(end == begin || end == nullptr || *end != '\0' || errno == ERANGE)
+    throw Usage_error("invalid value '" + text + "' for " + option);
+  return value;
+}
+
+Options parse_options(int argc, char** argv)
+{
+  Options options;
+  bool exact = false, epsilon = false;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const auto value = [&]() -> std::string {
+      if(i + 1 >= argc)
+        throw Usage_error(arg + " needs a value");
+      return argv[++i];
+    };
+    const auto name = [&]() -> std::string {
+      std::string v = value();
+      if(v.empty())
+        throw Usage_error(arg + " needs a file name");
+      return v;
+    };
+    if(arg == "--help" || arg == "-h")
+    {
+      options.help = true;
+      return options;
+    }
+    else if(arg == "--sources")
+    {
+      options.sources = value();
+      if(options.sources.empty())
+        throw Usage_error("--sources needs FILE, all or fps:K");
+    }
+    else if(arg == "--output")
+      options.output = name();
+    else if(arg == "--checkpoint")
+      options.checkpoint = name();
+    else if(arg == "--sources-output")
+      options.sources_output = name();
+    else if(arg == "--stats")
+      options.stats = name();
+    else if(arg == "--dtype")
+    {
+      const std::string d = value();
+      if(d == "float64" || d == "f8")
+        options.dtype = Npy_dtype::float64;
+      else if(d == "float32" || d == "f4")
+        options.dtype = Npy_dtype::float32;
+      else
+        throw Usage_error("--dtype must be float64 or float32");
+    }
+    else if(arg == "--exact")
+      exact = true;
+    else if(arg == "--epsilon")
+    {
+      options.epsilon = parse_number<double>(arg, value());
+      if(!(options.epsilon >= 0.) || !std::isfinite(options.epsilon))
+        throw Usage_error("--epsilon must be a finite number >= 0");
+      epsilon = true;
+    }
+    else if(arg == "--precision")
+    {
+      options.precision = value();
+      if(options.precision != "double" && options.precision != "float")
+        throw Usage_error("--precision must be double or float");
+    }
+    else if(arg == "--threads")
+    {
+      const std::size_t t = parse_number<std::size_t>(arg, value());
+      if(t > 4096)
+        throw Usage_error("--threads must be at most 4096");
+      options.threads = long(t);
+    }
+    else if(arg == "--progress")
+      options.progress = true;
+    else if(arg == "--quiet")
+      options.quiet = true;
+    else if(arg.size() > 1 && arg[0] == '-')
+      throw Usage_error("unknown option " + arg);
+    else if(options.mesh.empty())
+      options.mesh = arg;
+    else
+      throw Usage_error("more than one MESH given ('" + options.mesh + "' and '" + arg + "')");
+  }
+  if(options.mesh.empty())
+    throw Usage_error("no MESH given");
+  if(options.sources.empty())
+    throw Usage_error("no --sources given (FILE, all or fps:K)");
+  if(options.output.empty())
+    throw Usage_error("no --output given");
+  if(options.output == "-")
+    throw Usage_error("--output must be a file (rows are written at their offsets)");
+  if(exact && epsilon && options.epsilon > 0.)
+    throw Usage_error("--exact and --epsilon E > 0 contradict each other");
+  if(options.sources.compare(0, 4, "fps:") == 0)
+    parse_number<std::size_t>("--sources fps:K", options.sources.substr(4));
+  if(options.checkpoint.empty())
+    options.checkpoint = options.output + ".checkpoint";
+  return options;
+}
+
+// =============================================================================================
+// Sources
+// =============================================================================================
+
+// FNV-1a, 64 bits: the identity of the mesh file and of a source list in the fingerprint
+struct Fnv1a
+{
+  std::uint64_t value = 0xcbf29ce484222325ull;
+  void add(const char* bytes, std::size_t size)
+  {
+    for(std::size_t i = 0; i < size; ++i)
+      value = (value ^ static_cast<unsigned char>(bytes[i])) * 0x100000001b3ull;
+  }
+  std::string hex() const
+  {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+    return text;
+  }
+};
+
+struct Sources
+{
+  bool farthest_point = false;       // fps:K: chosen while the rows are computed
+  std::size_t rows = 0;              // number of sources, rows of the output
+  std::vector<std::size_t> vertices; // file vertex of each row (fps: the ones chosen so far)
+  std::string identity;              // what the fingerprint records of them
+};
+
+Sources read_sources(const std::string& spec, std::size_t file_vertices)
+{
+  Sources sources;
+  if(spec == "all")
+  {
+    sources.rows = file_vertices;
+    sources.vertices.resize(file_vertices);
+    for(std::size_t v = 0; v < file_vertices; ++v)
+      sources.vertices[v] = v;
+    sources.identity = "all";
+    return sources;
+  }
+  if(spec.compare(0, 4, "fps:") == 0)
+  {
+    sources.farthest_point = true;
+    sources.rows = parse_number<std::size_t>("--sources fps:K", spec.substr(4));
+    if(sources.rows == 0)
+      throw Input_error("fps:0 selects no source");
+    if(sources.rows > file_vertices)
+      throw Input_error("fps:" + std::to_string(sources.rows) + " asks for more sources than the mesh has vertices (" +
+                        std::to_string(file_vertices) + ")");
+    sources.identity = "fps:" + std::to_string(sources.rows);
+    return sources;
+  }
+  std::ifstream in(spec, std::ios::binary);
+  if(!in)
+    throw Input_error("cannot read the source list '" + spec + "': " + std::strerror(errno));
+  std::vector<std::size_t> first_entry(file_vertices, 0); // 1-based entry that listed the vertex
+  std::string token;
+  while(in >> token)
+  {
+    const std::size_t entry = sources.vertices.size() + 1;
+    if(token.size() > 19 || token.find_first_not_of("0123456789") != std::string::npos)
+      throw Input_error("source list '" + spec + "', entry " + std::to_string(entry) + ": '" + token.substr(0, 40) +
+                        "' is not a vertex index (0-based integers separated by white space)");
+    const unsigned long long v = std::stoull(token);
+    if(v >= file_vertices)
+      throw Input_error("source list '" + spec + "', entry " + std::to_string(entry) + ": source " + token +
+                        " is out of range (the mesh has " + std::to_string(file_vertices) + " vertices)");
+    if(first_entry[v] != 0)
+      throw Input_error("source list '" + spec + "': vertex " + token + " is listed twice (entries " +
+                        std::to_string(first_entry[v]) + " and " + std::to_string(entry) + ")");
+    first_entry[v] = entry;
+    sources.vertices.push_back(std::size_t(v));
+  }
+  if(in.bad())
+    throw Input_error("cannot read the source list '" + spec + "'");
+  if(sources.vertices.empty())
+    throw Input_error("source list '" + spec + "' is empty");
+  sources.rows = sources.vertices.size();
+  Fnv1a hash;
+  for(std::size_t v : sources.vertices)
+  {
+    const std::string text = std::to_string(v) + "\n";
+    hash.add(text.data(), text.size());
+  }
+  sources.identity = "list of " + std::to_string(sources.rows) + " vertices, fnv1a64 " + hash.hex();
+  return sources;
+}
+
+// Farthest-point sampling: the vertex not chosen yet whose distance to the nearest chosen source
+// is the largest (+infinity, unreachable, is the largest; the smallest index on ties).
+std::size_t farthest_vertex(const std::vector<double>& nearest, const std::vector<unsigned char>& chosen)
+{
+  std::size_t best = nearest.size();
+  for(std::size_t v = 0; v < nearest.size(); ++v)
+    if(!chosen[v] && (best == nearest.size() || nearest[v] > nearest[best]))
+      best = v;
+  return best;
+}
+
+// =============================================================================================
+// Checkpoint
+// =============================================================================================
+
+// What the run's rows depend on, one "key value" per line; a checkpoint resumes only for the same.
+std::string fingerprint_of(const Options& options, const Sources& sources, std::size_t file_vertices)
+{
+  std::ifstream in(options.mesh, std::ios::binary);
+  if(!in)
+    throw Input_error("cannot read '" + options.mesh + "'");
+  Fnv1a hash;
+  std::uint64_t size = 0;
+  std::vector<char> block(1 << 20);
+  while(in)
+  {
+    in.read(block.data(), std::streamsize(block.size()));
+    hash.add(block.data(), std::size_t(in.gcount()));
+    size += std::uint64_t(in.gcount());
+  }
+  char epsilon[40]; // the shortest text that reads back as the same double
+  *std::to_chars(epsilon, epsilon + sizeof epsilon - 1, options.epsilon).ptr = '\0';
+  return "dggvtp-batch checkpoint 1\n"
+         "mesh " + std::to_string(size) + " bytes, fnv1a64 " + hash.hex() + "\n"
+         "vertices " + std::to_string(file_vertices) + "\n"
+         "epsilon " + epsilon + "\n"
+         "precision " + options.precision + "\n"
+         "dtype " + (options.dtype == Npy_dtype::float32 ? "float32" : "float64") + "\n"
+         "sources " + sources.identity + "\n";
+}
+
+std::map<std::string, std::string> fingerprint_fields(const std::string& text)
+{
+  std::map<std::string, std::string> fields;
+  std::istringstream in(text);
+  std::string line;
+  while(std::getline(in, line))
+  {
+    const std::string::size_type space = line.find(' ');
+    fields[line.substr(0, space)] = space == std::string::npos ? "" : line.substr(space + 1);
+  }
+  return fields;
+}
+
+// the differences between the checkpoint's fingerprint and this command's, for the error message
+std::string fingerprint_differences(const std::string& recorded, const std::string& current)
+{
+  const auto a = fingerprint_fields(recorded), b = fingerprint_fields(current);
+  std::string out;
+  for(const auto& [key, value] : b)
+  {
+    const auto it = a.find(key);
+    const std::string old = it == a.end() ? "(none)" : it->second;
+    if(old != value)
+      out += (out.empty() ? "" : "; ") + key + " '" + old + "' there, '" + value + "' now";
+  }
+  for(const auto& [key, value] : a)
+    if(b.find(key) == b.end())
+      out += (out.empty() ? "" : "; ") + key + " '" + value + "' there, none now";
+  return out;
+}
+
+bool read_whole_file(const std::string& path, std::string& out)
+{
+  std::ifstream in(path, std::ios::binary);
+  if(!in)
+    return false;
+  out.assign((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return !in.bad();
+}
+
+// The state of farthest-point sampling after the rows made durable: the sources chosen (one per
+// done row) and, per file vertex, the distance to the nearest of them.
+struct Fps_state
+{
+  std::vector<std::size_t> chosen;
+  std::vector<double> nearest;
+
+  std::string bytes() const
+  {
+    std::string out = "dggvtp-batch fps 1\n";
+    const std::uint64_t sizes[2] = {chosen.size(), nearest.size()};
+    out.append(reinterpret_cast<const char*>(sizes), sizeof sizes);
+    for(std::size_t v : chosen)
+    {
+      const std::uint64_t w = v;
+      out.append(reinterpret_cast<const char*>(&w), sizeof w);
+    }
+    out.append(reinterpret_cast<const char*>(nearest.data()), nearest.size() * sizeof(double));
+    return out;
+  }
+  // false if `bytes` is not a state of `vertices` vertices and at most `rows` rows
+  bool read(const std::string& bytes, std::size_t vertices, std::size_t rows)
+  {
+    const std::string magic = "dggvtp-batch fps 1\n";
+    std::uint64_t sizes[2];
+    if(bytes.compare(0, magic.size(), magic) != 0 || bytes.size() < magic.size() + sizeof sizes)
+      return false;
+    std::memcpy(sizes, bytes.data() + magic.size(), sizeof sizes);
+    if(sizes[0] > rows || sizes[1] != vertices ||
+       bytes.size() != magic.size() + sizeof sizes + sizes[0] * 8 + sizes[1] * sizeof(double))
+      return false;
+    const char* p = bytes.data() + magic.size() + sizeof sizes;
+    chosen.resize(sizes[0]);
+    for(auto& v : chosen)
+    {
+      std::uint64_t w;
+      std::memcpy(&w, p, 8);
+      p += 8;
+      if(w >= vertices)
+        return false;
+      v = std::size_t(w);
+    }
+    nearest.resize(sizes[1]);
+    std::memcpy(nearest.data(), p, nearest.size() * sizeof(double));
+    return true;
+  }
+};
+
+struct Checkpoint
+{
+  std::string directory;
+  std::string data() const { return directory + "/rows.npy"; }  // the output being filled
+  std::string fingerprint() const { return directory + "/fingerprint"; }
+  std::string fps_state() const { return directory + "/fps_state"; }
+  std::string record(int rank) const { return directory + "/done." + std::to_string(rank); }
+  // the names a checkpoint directory holds (and temporary files of them)
+  static bool is_own_name(const std::string& name)
+  {
+    for(const char* prefix : {"rows.npy", "fingerprint", "fps_state", "done."})
+      if(name.compare(0, std::strlen(prefix), prefix) == 0)
+        return true;
+    return false;
+  }
+};
+
+struct Resume
+{
+  std::vector<unsigned char> done; // per row
+  Fps_state fps;                   // fps:K only
+  std::vector<std::string> notes;  // warnings for the user
+  dggvtp::Directory_lock lock;     // held by rank 0 for the whole run
+};
+
+// Rank 0: opens the checkpoint, or creates it. Returns the done rows.
+Resume open_checkpoint(const Checkpoint& checkpoint, const std::string& fingerprint, const std::string& header,
+                       std::uint64_t file_size, const Sources& sources, std::size_t file_vertices)
+{
+  Resume resume;
+  resume.done.assign(sources.rows, 0);
+  struct stat info;
+  bool fresh = true;
+  if(::stat(checkpoint.directory.c_str(), &info) == 0)
+  {
+    if(!S_ISDIR(info.st_mode))
+      throw Input_error("the checkpoint '" + checkpoint.directory + "' is not a directory");
+    resume.lock = dggvtp::Directory_lock(checkpoint.directory);
+    std::string recorded;
+    if(read_whole_file(checkpoint.fingerprint(), recorded))
+    {
+      if(recorded != fingerprint)
+        throw Input_error("the checkpoint '" + checkpoint.directory + "' belongs to another command (" +
+                          fingerprint_differences(recorded, fingerprint) +
+                          "): run that command again to finish it, or delete the directory to start over");
+      struct stat data;
+      std::string start;
+      std::ifstream in(checkpoint.data(), std::ios::binary);
+      start.resize(header.size());
+      if(::stat(checkpoint.data().c_str(), &data) != 0 || std::uint64_t(data.st_size) != file_size ||
+         !in.read(&start[0], std::streamsize(start.size())) || start != header)
+        resume.notes.push_back("the checkpoint's copy of the output is missing or damaged: starting over");
+      else
+      {
+        fresh = false;
+        if(sources.farthest_point)
+        {
+          std::string bytes;
+          if(read_whole_file(checkpoint.fps_state(), bytes) && !resume.fps.read(bytes, file_vertices, sources.rows))
+          {
+            resume.notes.push_back("the checkpoint's farthest-point state is damaged: computing every row again");
+            resume.fps = Fps_state();
+          }
+          for(std::size_t r = 0; r < resume.fps.chosen.size(); ++r)
+            resume.done[r] = 1;
+        }
+        else
+          dggvtp::read_records(checkpoint.directory, resume.done);
+      }
+    }
+    else
+    {
+      // a directory without fingerprint: an empty one given by the user, or a checkpoint killed
+      // while being created; anything else is not ours to delete
+      for(const std::string& name : dggvtp::directory_entries(checkpoint.directory))
+        if(!Checkpoint::is_own_name(name))
+          throw Input_error("'" + checkpoint.directory + "' is not a dggvtp-batch checkpoint (it holds '" + name +
+                            "' and no fingerprint): give another --checkpoint DIR");
+    }
+  }
+  else if(::mkdir(checkpoint.directory.c_str(), 0777) != 0)
+    throw Input_error("cannot create the checkpoint directory '" + checkpoint.directory + "': " + std::strerror(errno));
+  else
+    resume.lock = dggvtp::Directory_lock(checkpoint.directory);
+
+  if(fresh)
+  {
+    for(const std::string& name : dggvtp::directory_entries(checkpoint.directory))
+      if(Checkpoint::is_own_name(name))
+        std::remove((checkpoint.directory + "/" + name).c_str());
+    resume.done.assign(sources.rows, 0);
+    resume.fps = Fps_state();
+    // the data file: the header, then zeros (a sparse file) where the rows will go
+    dggvtp::write_file_atomically(checkpoint.data(), header);
+    if(::truncate(checkpoint.data().c_str(), off_t(file_size)) != 0)
+      throw Input_error("cannot make '" + checkpoint.data() + "' " + std::to_string(file_size) +
+                        " bytes long: " + std::strerror(errno));
+    dggvtp::write_file_atomically(checkpoint.fingerprint(), fingerprint);
+  }
+  return resume;
+}
+
+// Rank 0, every row done: the checkpoint's data file becomes the output, the checkpoint goes.
+void finish_checkpoint(const Checkpoint& checkpoint, const std::string& output)
+{
+  if(std::rename(checkpoint.data().c_str(), output.c_str()) != 0)
+  {
+    if(errno != EXDEV)
+      throw Input_error("cannot write '" + output + "': " + std::strerror(errno));
+    // another file system: copied beside the output, then renamed
+    std::string bytes;
+    if(!read_whole_file(checkpoint.data(), bytes))
+      throw Input_error("cannot read '" + checkpoint.data() + "'");
+    dggvtp::write_file_atomically(output, bytes);
+  }
+  std::remove(checkpoint.fingerprint().c_str());
+  for(const std::string& name : dggvtp::directory_entries(checkpoint.directory))
+    if(Checkpoint::is_own_name(name))
+      std::remove((checkpoint.directory + "/" + name).c_str());
+  ::rmdir(checkpoint.directory.c_str()); // left if the user put other files there
+}
+
+// =============================================================================================
+// Rows
+// =============================================================================================
+
+// computes the row of one source: the file vertices' distances, as dggvtp prints them; with
+// `parallel`, the propagation runs on the threads (same bits)
+using Row_function = std::function<std::vector<double>(std::size_t file_vertex, bool parallel)>;
+
+struct Prepared
+{
+  Row_function row;
+  std::size_t faces = 0;
+  double seconds_make_mesh = 0., seconds_prepare = 0.;
+};
+
+template <class Kernel>
+Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon)
+{
+  using Solver = CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Kernel>;
+  Prepared prepared;
+  auto solver = std::make_shared<std::optional<Solver>>();
+  const Clock::time_point t0 = Clock::now();
+  try
+  {
+    prepared.seconds_make_mesh = dggvtp::make_solver(*soup, *solver);
+  }
+  catch(const std::invalid_argument& e)
+  {
+    throw Input_error(e.what());
+  }
+  prepared.seconds_prepare = seconds_since(t0) - prepared.seconds_make_mesh;
+  prepared.faces = soup->triangles.size();
+  dggvtp::release_soup(*soup); // keeps file_vertex_of
+  prepared.row = [soup, solver, epsilon](std::size_t file_vertex, bool parallel) {
+    std::vector<typename Solver::FT> d((*solver)->number_of_vertices());
+    const auto sources = dggvtp::solver_vertices_of(*soup, file_vertex);
+    if(parallel)
+      (*solver)->template compute_distances_to_nearest_source<CGAL::Parallel_if_available_tag>(
+        sources, CGAL::make_property_map(d), CGAL::parameters::accuracy(epsilon));
+    else
+      (*solver)->template compute_distances_to_nearest_source<CGAL::Sequential_tag>(
+        sources, CGAL::make_property_map(d), CGAL::parameters::accuracy(epsilon));
+    return dggvtp::file_vertex_distances(*soup, d);
+  };
+  return prepared;
+}
+
+void encode_row(const std::vector<double>& row, Npy_dtype dtype, std::vector<char>& bytes)
+{
+  bytes.resize(row.size() * dggvtp::npy_item_size(dtype));
+  if(dtype == Npy_dtype::float64)
+    std::memcpy(bytes.data(), row.data(), bytes.size());
+  else
+    for(std::size_t i = 0; i < row.size(); ++i)
+    {
+      const float f = static_cast<float>(row[i]);
+      std::memcpy(bytes.data() + 4 * i, &f, 4);
+    }
+}
+
+// Writes rows at their offsets; every `interval` at most (and at the end) makes what was written
+// durable and only then reports those rows as done (`on_durable`: the record). A kill loses at
+// most the rows of the last interval. Safe to call from several threads.
+class Row_sink
+{
+public:
+  Row_sink(dggvtp::Row_file& file, std::uint64_t header_size, std::uint64_t row_size, double interval,
+           std::function<void(const std::vector<std::size_t>&)> on_durable)
+    : m_file(file), m_header_size(header_size), m_row_size(row_size), m_interval(interval),
+      m_on_durable(std::move(on_durable)), m_last_sync(Clock::now())
+  {
+  }
+  void write(std::size_t row, const std::vector<char>& bytes)
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_file.write_at(m_header_size + std::uint64_t(row) * m_row_size, bytes.data(), bytes.size());
+    m_pending.push_back(row);
+    if(seconds_since(m_last_sync) >= m_interval)
+      flush_locked();
+  }
+  void flush()
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    flush_locked();
+  }
+
+private:
+  void flush_locked()
+  {
+    if(!m_pending.empty())
+    {
+      m_file.sync();
+      m_on_durable(m_pending);
+      m_pending.clear();
+    }
+    m_last_sync = Clock::now();
+  }
+
+  std::mutex m_mutex;
+  dggvtp::Row_file& m_file;
+  std::uint64_t m_header_size, m_row_size; // bytes
+  double m_interval;                       // seconds between two syncs at most
+  std::function<void(const std::vector<std::size_t>&)> m_on_durable;
+  std::vector<std::size_t> m_pending;      // written, not yet durable
+  Clock::time_point m_last_sync;
+};
+
+// Runs `work(i)` for i in [0, n) on `threads` threads (0 = all cores), in order of i as threads
+// become free; the first exception stops the others after their current item and is rethrown.
+void for_each_row(std::size_t n, long threads, const std::function<void(std::size_t)>& work)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads != 1 && n > 1)
+  {
+    std::optional<tbb::global_control> limit;
+    if(threads > 0)
+      limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    const int workers = threads > 0 ? int(threads) : tbb::this_task_arena::max_concurrency();
+    std::atomic<std::size_t> next(0);
+    std::atomic<bool> failed(false);
+    tbb::parallel_for(0, workers, [&](int) {
+      for(std::size_t i; !failed && (i = next++) < n;)
+      {
+        try
+        {
+          work(i);
+        }
+        catch(...)
+        {
+          failed = true;
+          throw;
+        }
+      }
+    });
+    return;
+  }
+#else
+  (void)threads;
+#endif
+  for(std::size_t i = 0; i < n; ++i)
+    work(i);
+}
+
+// =============================================================================================
+// Progress
+// =============================================================================================
+
+// A thread of rank 0 printing the rows done (durable, from all ranks) every second: a line
+// rewritten in place on a terminal, a line every 10 s otherwise.
+class Progress
+{
+public:
+  Progress(std::function<std::size_t()> count, std::size_t total, std::size_t already_done)
+    : m_count(std::move(count)), m_total(total), m_start_count(already_done), m_terminal(::isatty(2) != 0),
+      m_start(Clock::now()), m_thread([this] { loop(); })
+  {
+  }
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+  ~Progress()
+  {
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_stop = true;
+    }
+    m_wake.notify_all();
+    m_thread.join();
+  }
+
+private:
+  void loop()
+  {
+    std::unique_lock<std::mutex> lock(m_mutex);
+    Clock::time_point last_line = Clock::now();
+    for(;;)
+    {
+      const bool stop = m_wake.wait_for(lock, std::chrono::seconds(1), [this] { return m_stop; });
+      std::size_t done = m_start_count;
+      try
+      {
+        done = m_count();
+      }
+      catch(const std::exception&)
+      {
+      }
+      if(m_terminal || stop || seconds_since(last_line) >= 10.)
+      {
+        print(done, stop);
+        last_line = Clock::now();
+      }
+      if(stop)
+        return;
+    }
+  }
+  static std::string duration(double s)
+  {
+    if(!std::isfinite(s))
+      return "?";
+    const long t = long(s + 0.5);
+    char text[32];
+    if(t >= 3600)
+      std::snprintf(text, sizeof text, "%ldh%02ldm", t / 3600, t / 60 % 60);
+    else if(t >= 60)
+      std::snprintf(text, sizeof text, "%ldm%02lds", t / 60, t % 60);
+    else
+      std::snprintf(text, sizeof text, "%lds", t);
+    return text;
+  }
+  void print(std::size_t done, bool last)
+  {
+    const double elapsed = seconds_since(m_start);
+    const double rate = elapsed > 0. ? double(done - std::min(done, m_start_count)) / elapsed : 0.;
+    const double left = rate > 0. ? double(m_total - std::min(done, m_total)) / rate
+                                  : std::numeric_limits<double>::infinity();
+    char line[200];
+    std::snprintf(line, sizeof line, "dggvtp-batch: %zu/%zu rows (%.1f%%), %.3g rows/s, %s %s", done, m_total,
+                  m_total > 0 ? 100. * double(done) / double(m_total) : 100., rate,
+                  last ? "elapsed" : "ETA", (last ? duration(elapsed) : duration(left)).c_str());
+    if(m_terminal)
+      std::fprintf(stderr, "\r%-79s%s", line, last ? "\n" : "");
+    else
+      std::fprintf(stderr, "%s\n", line);
+    std::fflush(stderr);
+  }
+
+  std::function<std::size_t()> m_count; // rows done so far, all ranks
+  std::size_t m_total, m_start_count;
+  bool m_terminal;
+  Clock::time_point m_start;
+  std::mutex m_mutex;
+  std::condition_variable m_wake;
+  bool m_stop = false;
+  std::thread m_thread; // last: starts once the rest is ready
+};
+
+// CPU time of this process so far (all its threads, user + system), in seconds
+double cpu_seconds()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+double peak_rss_mb()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.;
+}
+
+std::string json_string(const std::string& s)
+{
+  std::string out = "\"";
+  for(char c : s)
+  {
+    if(c == '"' || c == '\\')
+      out += '\\';
+    if(static_cast<unsigned char>(c) < 0x20)
+    {
+      char buffer[8];
+      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+      out += buffer;
+    }
+    else
+      out += c;
+  }
+  return out + "\"";
+}
+
+// =============================================================================================
+// The run
+// =============================================================================================
+
+// Runs `body` on every rank; if it throws on any, the first rank that failed prints its error
+// and every rank gets the largest exit status (1 bad usage, 2 bad input), 0 otherwise.
+int collectively(const dggvtp::Communicator& comm, const std::function<void()>& body)
+{
+  int status = 0;
+  std::string message;
+  try
+  {
+    body();
+  }
+  catch(const Usage_error& e)
+  {
+    status = 1;
+    message = std::string("error: ") + e.what() + " (see dggvtp-batch --help)";
+  }
+  catch(const std::bad_alloc&)
+  {
+    status = 2;
+    message = "error: out of memory";
+  }
+  catch(const std::exception& e)
+  {
+    status = 2;
+    message = std::string("error: ") + e.what();
+  }
+  const int first = comm.min(status != 0 ? comm.rank() : comm.size());
+  if(first == comm.rank())
+    std::cerr << message << std::endl;
+  return comm.max(status);
+}
+
+struct Phase_one
+{
+  Options options;
+  std::shared_ptr<dggvtp::Loaded_soup> soup;
+  std::size_t file_vertices = 0;
+  std::vector<std::string> repairs;
+  Sources sources;
+  Prepared prepared;
+  double seconds_load = 0.;
+};
+
+int run_main(dggvtp::Communicator& comm, int argc, char** argv)
+{
+  const Clock::time_point t_start = Clock::now();
+  const bool root = comm.rank() == 0;
+  Phase_one one;
+  Options& options = one.options;
+
+  // 1. every rank: options, mesh, sources, solver
+  int status = collectively(comm, [&] {
+    options = parse_options(argc, argv);
+    if(options.help)
+      return;
+    struct stat info;
+    if(::stat(options.output.c_str(), &info) == 0 && !S_ISREG(info.st_mode))
+      throw Input_error("cannot write '" + options.output + "': it exists and is not a regular file (the output " +
+                        "is renamed into place)");
+    const Clock::time_point t0 = Clock::now();
+    one.soup = std::make_shared<dggvtp::Loaded_soup>(dggvtp::load_soup(options.mesh));
+    one.file_vertices = one.soup->file_vertices;
+    one.sources = read_sources(options.sources, one.file_vertices);
+    dggvtp::npy_file_size(options.dtype, one.sources.rows, one.file_vertices); // too large: error now
+    const double seconds_read = seconds_since(t0);
+    one.prepared = options.precision == "float"
+                     ? prepare<CGAL::Simple_cartesian<float>>(one.soup, options.epsilon)
+                     : prepare<CGAL::Exact_predicates_inexact_constructions_kernel>(one.soup, options.epsilon);
+    one.repairs = one.soup->repairs;
+    one.seconds_load = seconds_read + one.prepared.seconds_make_mesh;
+  });
+  if(status != 0)
+    return status;
+  if(options.help)
+  {
+    if(root)
+      std::cout << usage_text;
+    return 0;
+  }
+  long threads = options.threads;
+  if(!comm.allows_threads() && threads != 1)
+  {
+    if(root && !options.quiet)
+      std::cerr << "warning: the MPI library does not allow several threads to call it: one thread per process\n";
+    threads = 1;
+  }
+  if(root && !options.quiet)
+  {
+    for(const std::string& repair : one.repairs)
+      std::cerr << "warning: " << options.mesh << ": " << repair << "\n";
+#ifndef CGAL_LINKED_WITH_TBB
+    if(options.threads != 1)
+      std::cerr << "warning: dggvtp-batch was built without TBB: one thread per process\n";
+#endif
+  }
+
+  Sources& sources = one.sources;
+  const std::string header = dggvtp::npy_header(options.dtype, sources.rows, one.file_vertices);
+  const std::uint64_t row_size = std::uint64_t(one.file_vertices) * dggvtp::npy_item_size(options.dtype);
+  const std::uint64_t file_size = dggvtp::npy_file_size(options.dtype, sources.rows, one.file_vertices);
+  const Checkpoint checkpoint{options.checkpoint};
+
+  // 2. rank 0 opens the checkpoint; the others learn the done rows
+  Resume resume;
+  status = collectively(comm, [&] {
+    if(root)
+      resume = open_checkpoint(checkpoint, fingerprint_of(options, sources, one.file_vertices), header, file_size,
+                               sources, one.file_vertices);
+  });
+  if(status != 0)
+    return status;
+  if(root && !options.quiet)
+    for(const std::string& note : resume.notes)
+      std::cerr << "warning: " << note << "\n";
+  {
+    std::string done(resume.done.begin(), resume.done.end());
+    comm.broadcast(done);
+    resume.done.assign(done.begin(), done.end());
+  }
+  std::size_t already_done = 0;
+  for(unsigned char d : resume.done)
+    already_done += d;
+
+  // 3. the missing rows
+  const bool show_progress = root && !options.quiet && (options.progress || ::isatty(2));
+  const Clock::time_point t_compute = Clock::now();
+  std::size_t computed = 0; // by this rank
+  double seconds_own = 0.;  // this rank's rows, without waiting for the others
+  try
+  {
+    std::atomic<std::size_t> durable(already_done); // fps: rows done, for the progress line
+    if(sources.farthest_point)
+    {
+      if(root)
+      {
+        // sequential: each source is the farthest vertex from the rows before it
+        Fps_state& state = resume.fps;
+        std::vector<unsigned char> chosen(one.file_vertices, 0);
+        if(state.chosen.empty())
+          state.nearest.assign(one.file_vertices, std::numeric_limits<double>::infinity());
+        for(std::size_t v : state.chosen)
+          chosen[v] = 1;
+        dggvtp::Row_file file(checkpoint.data(), comm.uses_mpi());
+        // the state is saved after the rows it accounts for are durable: here, the copy taken
+        // when those rows were written
+        Fps_state durable_state;
+        Row_sink sink(file, header.size(), row_size, 1.0, [&](const std::vector<std::size_t>& rows) {
+          dggvtp::write_file_atomically(checkpoint.fps_state(), durable_state.bytes());
+          durable += rows.size();
+        });
+        std::optional<Progress> progress;
+        if(show_progress)
+          progress.emplace([&] { return durable.load(); }, sources.rows, already_done);
+        std::vector<char> bytes;
+        for(std::size_t r = state.chosen.size(); r < sources.rows; ++r)
+        {
+          const std::size_t v = r == 0 ? 0 : farthest_vertex(state.nearest, chosen);
+          std::vector<double> row;
+          {
+#ifdef CGAL_LINKED_WITH_TBB
+            std::optional<tbb::global_control> limit;
+            if(threads > 0)
+              limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+#endif
+            row = one.prepared.row(v, threads != 1);
+          }
+          chosen[v] = 1;
+          state.chosen.push_back(v);
+          for(std::size_t i = 0; i < row.size(); ++i)
+            state.nearest[i] = (std::min)(state.nearest[i], row[i]);
+          encode_row(row, options.dtype, bytes);
+          durable_state = state;
+          sink.write(r, bytes);
+          ++computed;
+        }
+        sink.flush();
+      }
+      seconds_own = seconds_since(t_compute);
+      comm.idle_barrier();
+      std::string chosen_bytes;
+      if(root)
+        for(std::size_t v : resume.fps.chosen)
+          chosen_bytes += std::to_string(v) + "\n";
+      comm.broadcast(chosen_bytes);
+      std::istringstream in(chosen_bytes);
+      sources.vertices.clear();
+      for(std::size_t v; in >> v;)
+        sources.vertices.push_back(v);
+    }
+    else
+    {
+      std::vector<std::size_t> mine; // the missing rows: the i-th to rank i mod R
+      for(std::size_t r = 0, i = 0; r < sources.rows; ++r)
+        if(!resume.done[r] && i++ % std::size_t(comm.size()) == std::size_t(comm.rank()))
+          mine.push_back(r);
+      dggvtp::Row_file file(checkpoint.data(), comm.uses_mpi());
+      dggvtp::Record_file record(checkpoint.record(comm.rank()));
+      Row_sink sink(file, header.size(), row_size, 1.0,
+                    [&](const std::vector<std::size_t>& rows) { record.append(rows); });
+      std::optional<Progress> progress;
+      if(show_progress)
+        progress.emplace(
+          [&] {
+            std::vector<unsigned char> done(sources.rows, 0);
+            dggvtp::read_records(checkpoint.directory, done);
+            std::size_t n = 0;
+            for(unsigned char d : done)
+              n += d;
+            return n;
+          },
+          sources.rows, already_done);
+      for_each_row(mine.size(), threads, [&](std::size_t i) {
+        thread_local std::vector<char> bytes;
+        encode_row(one.prepared.row(sources.vertices[mine[i]], false), options.dtype, bytes);
+        sink.write(mine[i], bytes);
+      });
+      sink.flush();
+      computed = mine.size();
+      seconds_own = seconds_since(t_compute);
+      comm.idle_barrier();
+    }
+  }
+  catch(const std::exception& e)
+  {
+    const std::string what = dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory" : e.what();
+    std::cerr << "error: " << (comm.size() > 1 ? "rank " + std::to_string(comm.rank()) + ": " : std::string()) << what
+              << std::endl;
+    if(comm.size() > 1)
+      comm.abort(2); // the other ranks would wait for this one for ever
+    return 2;
+  }
+  const double seconds_compute = seconds_since(t_compute);
+
+  // 4. rank 0: every row recorded? then the output
+  const std::vector<double> rss = comm.gather(peak_rss_mb());
+  const std::vector<double> cpu = comm.gather(cpu_seconds());
+  const std::vector<double> compute_seconds = comm.gather(seconds_own);
+  const std::vector<double> computed_per_rank = comm.gather(double(computed));
+  status = collectively(comm, [&] {
+    if(!root)
+      return;
+    if(!sources.farthest_point)
+    {
+      std::vector<unsigned char> done(sources.rows, 0);
+      dggvtp::read_records(checkpoint.directory, done);
+      for(std::size_t r = 0; r < sources.rows; ++r)
+        if(!done[r])
+          throw Input_error("row " + std::to_string(r) + " is not recorded as done after the run (the checkpoint '" +
+                            checkpoint.directory + "' was changed meanwhile?)");
+    }
+    finish_checkpoint(checkpoint, options.output);
+    if(!options.sources_output.empty())
+    {
+      std::string text;
+      for(std::size_t v : sources.vertices)
+        text += std::to_string(v) + "\n";
+      dggvtp::write_file_atomically(options.sources_output, text);
+    }
+  });
+  if(status != 0 || !root)
+    return status;
+
+  std::size_t computed_total = 0;
+  for(double c : computed_per_rank)
+    computed_total += std::size_t(c);
+  const double seconds_total = seconds_since(t_start);
+  const auto json_list = [](const std::vector<double>& values, const char* format) {
+    std::string out;
+    for(double v : values)
+    {
+      char text[32];
+      std::snprintf(text, sizeof text, format, v);
+      out += (out.empty() ? "" : ", ") + std::string(text);
+    }
+    return out;
+  };
+  std::string rss_list;
+  double rss_max = 0.;
+  for(double r : rss)
+  {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", r);
+    rss_list += (rss_list.empty() ? "" : ", ") + std::string(text);
+    rss_max = (std::max)(rss_max, r);
+  }
+  const char* dtype = options.dtype == Npy_dtype::float32 ? "float32" : "float64";
+  if(!options.stats.empty())
+  {
+    const auto format = [&](char* text, std::size_t size) {
+      return std::snprintf(text, size,
+                  "{\"mesh\": %s, \"vertices\": %zu, \"faces\": %zu, \"rows\": %zu, \"rows_computed\": %zu, "
+                  "\"rows_resumed\": %zu, \"ranks\": %d, \"threads\": %ld, \"epsilon\": %.17g, \"precision\": \"%s\", "
+                  "\"dtype\": \"%s\", \"seconds_load\": %.6f, \"seconds_prepare\": %.6f, \"seconds_compute\": %.6f, "
+                  "\"seconds_total\": %.6f, \"peak_rss_mb\": [%s], \"cpu_seconds\": [%s], "
+                  "\"seconds_compute_per_rank\": [%s]}\n",
+                  json_string(options.mesh).c_str(), one.file_vertices, one.prepared.faces, sources.rows,
+                  computed_total, already_done, comm.size(), options.threads, options.epsilon,
+                  options.precision.c_str(), dtype, one.seconds_load, one.prepared.seconds_prepare, seconds_compute,
+                  seconds_total, rss_list.c_str(), json_list(cpu, "%.3f").c_str(),
+                  json_list(compute_seconds, "%.3f").c_str());
+    };
+    std::vector<char> text(std::size_t(format(nullptr, 0)) + 1);
+    format(text.data(), text.size());
+    dggvtp::write_file_atomically(options.stats, text.data()); // only rank 0 is left: no collective call
+  }
+  if(!options.quiet)
+    std::cout << "dggvtp-batch: " << options.mesh << ": " << one.file_vertices << " vertices, " << one.prepared.faces
+              << " faces\n"
+              << "  " << sources.rows << " sources (" << sources.identity << "), "
+              << (options.epsilon > 0. ? "DGG-VTP epsilon " + std::to_string(options.epsilon) : std::string("exact (VTP)"))
+              << ", " << options.precision << ", " << dtype << "\n"
+              << "  " << comm.size() << (comm.size() == 1 ? " process" : " processes") << " x "
+              << (options.threads == 0 ? std::string("all cores'") : std::to_string(options.threads))
+              << (options.threads == 1 ? " thread" : " threads") << ": computed " << computed_total << " rows"
+              << (already_done > 0 ? " (" + std::to_string(already_done) + " were done before)" : std::string()) << "\n"
+              << "  load " << one.seconds_load << " s, prepare " << one.prepared.seconds_prepare << " s, rows "
+              << seconds_compute << " s, total " << seconds_total << " s\n"
+              << "  peak memory per process " << rss_list << " MB\n"
+              << "  wrote " << options.output << "\n";
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+#ifndef DGGVTP_WITH_MPI
+  if(dggvtp::started_by_mpi_launcher())
+  {
+    const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
+    if(size == nullptr)
+      size = std::getenv("PMI_SIZE");
+    if(size != nullptr && std::string(size) != "1")
+    {
+      std::cerr << "error: dggvtp-batch was built without MPI: it cannot share the work among " << size
+                << " processes (rebuild it with MPI, or run one process)\n";
+      return 1;
+    }
+  }
+#endif
+  try
+  {
+    dggvtp::Communicator comm(argc, argv);
+    return run_main(comm, argc, argv);
+  }
+  catch(const std::bad_alloc&)
+  {
+    std::cerr << "error: out of memory\n";
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "error: " << e.what() << "\n";
+  }
+  return 2;
+}

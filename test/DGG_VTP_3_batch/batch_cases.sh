@@ -1,0 +1,272 @@
+#!/usr/bin/env bash
+# Tests of dggvtp-batch: one case per call.
+# usage: batch_cases.sh DGGVTP_BATCH DGGVTP NPY_ROWS MESH_DIR MPIEXEC CASE
+#   MPIEXEC: the MPI launcher dggvtp-batch was built for, or "none" (built without MPI); the MPI
+#   cases then say that they are skipped and pass (exit status 77 tells CTest: skipped).
+# The rows are compared with dggvtp's text output bit for bit: npy_rows prints a row as dggvtp
+# does (%.17g), which tells every double apart.
+set -u
+batch=$1 dggvtp=$2 npy_rows=$3 meshes=$4 mpiexec=$5 case=$6
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+fail() { echo "FAIL ($case): $*" >&2; exit 1; }
+skip() { echo "SKIPPED ($case): $*"; exit 77; }
+spot=$meshes/spot.ply lion=$meshes/lion_head.ply
+
+# mpirun as CI runs it: as root, more ranks than cores, no shared-memory single copy (not allowed
+# in containers; the ranks exchange a few bytes only)
+export OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_rmaps_base_oversubscribe=1
+# Under the sanitizers (scripts/run_sanitizers.sh) the processes mpirun starts run without
+# LeakSanitizer: Open MPI's allocations kept until exit come from components it has unloaded by
+# then (frames without a module, which no suppression can name). AddressSanitizer's other checks
+# and UBSan stay on, and the single-process cases (MPI not initialised) still check for leaks.
+mpi_environment=(env "ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0")
+mpi() { # mpi RANKS ARGS...
+  local np=$1; shift
+  local extra=()
+  "$mpiexec" --version 2>/dev/null | grep -Eq "Open MPI|OpenRTE" && extra=(--oversubscribe)
+  [ "$(id -u)" -eq 0 ] && "$mpiexec" --version 2>/dev/null | grep -Eq "Open MPI|OpenRTE" && extra+=(--allow-run-as-root)
+  "${mpi_environment[@]}" "$mpiexec" "${extra[@]}" -np "$np" "$batch" "$@"
+}
+need_mpi() {
+  [ "$mpiexec" != none ] || skip "dggvtp-batch was built without MPI"
+  command -v "$mpiexec" >/dev/null 2>&1 || skip "no MPI launcher ($mpiexec)"
+}
+
+# run ARGS...: dggvtp-batch in one process; sets $rc, $err
+run() {
+  timeout 300 "$batch" "$@" >"$work/.stdout" 2>"$work/.stderr"
+  rc=$?
+  err=$(cat "$work/.stderr")
+  [ "$rc" -lt 124 ] || fail "killed or timed out ($rc): $*; stderr: $err"
+}
+expect_input_error() { # MESSAGE_PATTERN
+  [ "$rc" -eq 2 ] || fail "exit status $rc, expected 2; stderr: $err"
+  [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] || fail "expected one stderr line, got: $err"
+  [[ "$err" == error:* ]] || fail "stderr does not start with error: $err"
+  [[ "$err" == *$1* ]] || fail "the error does not say '$1': $err"
+  [ ! -e out.npy ] || fail "an output file was written"
+}
+expect_usage_error() {
+  [ "$rc" -eq 1 ] || fail "exit status $rc, expected 1; stderr: $err"
+  [[ "$err" == error:* ]] || fail "stderr does not start with error: $err"
+}
+# same_as_dggvtp NPY MESH "SOURCES" [DGGVTP OPTIONS]: row k of NPY is dggvtp's output for source k
+same_as_dggvtp() {
+  local npy=$1 mesh=$2 sources=$3; shift 3
+  local k=0 s
+  for s in $sources; do
+    "$dggvtp" "$mesh" --source "$s" --output "d$s.txt" --quiet "$@" || fail "dggvtp failed on source $s"
+    "$npy_rows" "$npy" "$k" > "r$k.txt" || fail "$npy is not a valid .npy file"
+    cmp -s "d$s.txt" "r$k.txt" || fail "row $k (source $s) differs from dggvtp $*: $(diff "d$s.txt" "r$k.txt" | head -4)"
+    k=$((k + 1))
+  done
+}
+expect_shape() { # NPY "ROWS COLUMNS DTYPE"
+  local shape
+  shape=$("$npy_rows" "$1") || fail "$1 is not a valid .npy file"
+  [ "$shape" = "$2" ] || fail "$1: shape $shape, expected $2"
+}
+json_field() { sed -n "s/.*\"$2\": \([0-9.e+-]*\).*/\1/p" "$1"; }
+# wait_for_records CHECKPOINT PID: until some row is recorded done (or the run ends)
+wait_for_records() {
+  local i
+  for ((i = 0; i < 600; ++i)); do
+    [ -n "$(cat "$1"/done.* 2>/dev/null)" ] && return 0
+    kill -0 "$2" 2>/dev/null || return 1
+    sleep 0.05
+  done
+  return 1
+}
+# rank_processes PID: the dggvtp-batch processes started under PID (the launcher's children)
+rank_processes() {
+  local child
+  for child in $(pgrep -P "$1"); do
+    [ "$(cat "/proc/$child/comm" 2>/dev/null)" = dggvtp-batch ] && echo "$child"
+    rank_processes "$child"
+  done
+}
+# lion_head, 60 sources spread over the mesh, in a shuffled order: a few seconds of work
+lion_sources() { awk 'BEGIN { for (i = 0; i < 60; ++i) print (i * 4099) % 8356 }'; }
+
+case $case in
+usage)
+  run "$spot" --output out.npy; expect_usage_error
+  run "$spot" --sources all; expect_usage_error
+  run "$spot" --sources fps:x --output out.npy; expect_usage_error
+  run "$spot" --sources all --output out.npy --dtype float16; expect_usage_error
+  run "$spot" --sources all --output - ; expect_usage_error
+  run "$spot" --sources all --output out.npy --exact --epsilon 1e-3; expect_usage_error
+  run --help; [ "$rc" -eq 0 ] && grep -q "fps:K" .stdout || fail "--help"
+  ;;
+bad_source_lists)
+  printf '1 2 3000\n' > range.txt
+  run "$spot" --sources range.txt --output out.npy; expect_input_error "out of range"
+  printf '4\n7 4\n' > twice.txt
+  run "$spot" --sources twice.txt --output out.npy; expect_input_error "listed twice"
+  printf ' \n\n' > empty.txt
+  run "$spot" --sources empty.txt --output out.npy; expect_input_error "empty"
+  printf '1 -2\n' > negative.txt
+  run "$spot" --sources negative.txt --output out.npy; expect_input_error "not a vertex index"
+  printf '1 2.5\n' > fraction.txt
+  run "$spot" --sources fraction.txt --output out.npy; expect_input_error "not a vertex index"
+  run "$spot" --sources missing.txt --output out.npy; expect_input_error "cannot read the source list"
+  run "$spot" --sources fps:0 --output out.npy; expect_input_error "no source"
+  run "$spot" --sources fps:2931 --output out.npy; expect_input_error "more sources than"
+  [ -z "$(ls -A)" ] || [ "$(ls | grep -v '\.txt$')" = "" ] || fail "files left behind: $(ls)"
+  ;;
+rows_equal_dggvtp)
+  # exact and DGG-VTP, double and float, float64 and float32: each row is dggvtp's output
+  printf '17 0 2929 1000\n5' > s.txt
+  run "$spot" --sources s.txt --output out.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  expect_shape out.npy "5 2930 float64"; same_as_dggvtp out.npy "$spot" "17 0 2929 1000 5"
+  run "$lion" --sources s.txt --output out.npy --epsilon 1e-5 --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  expect_shape out.npy "5 8356 float64"; same_as_dggvtp out.npy "$lion" "17 0 2929 1000 5" --epsilon 1e-5
+  run "$lion" --sources s.txt --output out.npy --precision float --dtype float32 --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  expect_shape out.npy "5 8356 float32"; same_as_dggvtp out.npy "$lion" "17 0 2929 1000 5" --precision float
+  [ ! -e out.npy.checkpoint ] || fail "the checkpoint was left behind"
+  ;;
+all_sources_and_threads)
+  # --sources all on a small mesh: row v is vertex v's field; any thread count, the same bytes
+  awk 'BEGIN { for (i = 0; i < 20; ++i) print "v", i % 5, int(i / 5), (i % 3) * 0.1
+               for (y = 0; y < 3; ++y) for (x = 0; x < 4; ++x) { a = y * 5 + x + 1
+                 print "f", a, a + 1, a + 6; print "f", a, a + 6, a + 5 } }' > grid.obj
+  run grid.obj --sources all --output one.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  expect_shape one.npy "20 20 float64"; same_as_dggvtp one.npy grid.obj "$(seq 0 19)"
+  lion_sources > l.txt
+  run "$lion" --sources l.txt --output t1.npy --threads 1 --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  run "$lion" --sources l.txt --output t2.npy --threads 2 --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  cmp -s t1.npy t2.npy || fail "2 threads do not give the bytes of 1"
+  same_as_dggvtp t2.npy "$lion" "$(head -3 l.txt)"
+  ;;
+mpi_ranks_and_threads)
+  # R = 1, 2, 3 ranks x 1, 2 threads: the bytes of one process, which are dggvtp's rows
+  need_mpi
+  lion_sources | head -24 > l.txt
+  run "$lion" --sources l.txt --output ref.npy --epsilon 1e-6 --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  same_as_dggvtp ref.npy "$lion" "$(cat l.txt)" --epsilon 1e-6
+  for ranks in 1 2 3; do
+    for threads in 1 2; do
+      mpi "$ranks" "$lion" --sources l.txt --output "m$ranks$threads.npy" --epsilon 1e-6 --threads "$threads" \
+        --stats "s$ranks$threads.json" --quiet > mpi.log 2>&1 || fail "mpirun -np $ranks, $threads threads: $(cat mpi.log)"
+      cmp -s ref.npy "m$ranks$threads.npy" || fail "$ranks ranks x $threads threads: other bytes"
+      grep -q "\"ranks\": $ranks," "s$ranks$threads.json" || fail "not $ranks ranks: $(cat "s$ranks$threads.json")"
+      echo "$ranks ranks x $threads threads: identical bytes"
+    done
+  done
+  ;;
+kill_and_resume)
+  # one process killed (SIGKILL) mid-way, run again: only the missing rows, the same bytes
+  lion_sources > l.txt
+  run "$lion" --sources l.txt --output ref.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  "$batch" "$lion" --sources l.txt --output out.npy --quiet 2>/dev/null &
+  pid=$!
+  wait_for_records out.npy.checkpoint "$pid" || fail "no row recorded before the run ended"
+  kill -9 "$pid"; wait "$pid" 2>/dev/null
+  [ ! -e out.npy ] || fail "the killed run left an output file"
+  # a torn last record (the kill came while appending) is ignored
+  printf '5' >> out.npy.checkpoint/done.0
+  run "$lion" --sources l.txt --output out.npy --stats st.json --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  cmp -s ref.npy out.npy || fail "the resumed run wrote other bytes"
+  resumed=$(json_field st.json rows_resumed) computed=$(json_field st.json rows_computed)
+  [ "$resumed" -gt 0 ] && [ "$computed" -gt 0 ] && [ $((resumed + computed)) -eq 60 ] ||
+    fail "resumed $resumed + computed $computed rows, expected some of each, 60 in all"
+  echo "killed after $resumed rows, resumed with $computed"
+  [ ! -e out.npy.checkpoint ] || fail "the checkpoint was left behind"
+  ;;
+mpi_kill_one_rank_and_resume)
+  # one of 3 ranks killed (SIGKILL) mid-way, the job run again on 2 ranks: the same bytes
+  need_mpi
+  lion_sources > l.txt
+  run "$lion" --sources l.txt --output ref.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  mpi 3 "$lion" --sources l.txt --output out.npy --quiet > mpi.log 2>&1 &
+  launcher=$!
+  wait_for_records out.npy.checkpoint "$launcher" || fail "no row recorded before the run ended: $(cat mpi.log)"
+  ranks=$(rank_processes "$launcher" | tr '\n' ' ')
+  victim=$(echo "$ranks" | awk '{ print $2 }')
+  [ -n "$victim" ] || fail "no rank process found under the launcher ($ranks)"
+  kill -9 "$victim"
+  wait "$launcher"
+  [ $? -ne 0 ] || fail "the launcher reported success after a rank was killed"
+  [ ! -e out.npy ] || fail "the killed run left an output file"
+  mpi 2 "$lion" --sources l.txt --output out.npy --stats st.json --quiet > mpi.log 2>&1 || fail "resume: $(cat mpi.log)"
+  cmp -s ref.npy out.npy || fail "the resumed run wrote other bytes"
+  resumed=$(json_field st.json rows_resumed) computed=$(json_field st.json rows_computed)
+  [ "$resumed" -gt 0 ] && [ "$computed" -gt 0 ] && [ $((resumed + computed)) -eq 60 ] ||
+    fail "resumed $resumed + computed $computed rows, expected some of each, 60 in all"
+  echo "rank killed after $resumed rows were recorded, resumed with $computed"
+  ;;
+resume_refuses_another_command)
+  lion_sources > l.txt
+  "$batch" "$lion" --sources l.txt --output out.npy --epsilon 1e-6 --quiet 2>/dev/null &
+  pid=$!
+  wait_for_records out.npy.checkpoint "$pid" || fail "no row recorded before the run ended"
+  # a second run on the checkpoint while the first is at work
+  run "$lion" --sources l.txt --output out.npy --epsilon 1e-6 --quiet; expect_input_error "another dggvtp-batch is running"
+  kill -9 "$pid"; wait "$pid" 2>/dev/null
+  run "$lion" --sources l.txt --output out.npy --epsilon 1e-5 --quiet
+  expect_input_error "epsilon '1e-06' there, '1e-05' now"
+  [[ "$err" == *"belongs to another command"* ]] || fail "unclear refusal: $err"
+  head -59 l.txt > fewer.txt
+  run "$lion" --sources fewer.txt --output out.npy --epsilon 1e-6 --quiet; expect_input_error "sources"
+  run "$lion" --sources l.txt --output out.npy --epsilon 1e-6 --dtype float32 --quiet; expect_input_error "dtype"
+  run "$spot" --sources l.txt --output out.npy --epsilon 1e-6 --quiet; expect_input_error "out of range"
+  run "$meshes/bunny.ply" --sources l.txt --output out.npy --epsilon 1e-6 --quiet; expect_input_error "mesh '"
+  run "$lion" --sources l.txt --output out.npy --epsilon 1e-6 --precision float --quiet; expect_input_error "precision"
+  # the same command still finishes it
+  run "$lion" --sources l.txt --output out.npy --epsilon 1e-6 --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  same_as_dggvtp out.npy "$lion" "$(head -2 l.txt)" --epsilon 1e-6
+  # a directory that is not a checkpoint is left alone
+  rm out.npy
+  mkdir notes && echo keep > notes/mine.txt
+  run "$spot" --sources fps:2 --output o2.npy --checkpoint notes --quiet; expect_input_error "not a dggvtp-batch checkpoint"
+  [ -f notes/mine.txt ] || fail "a user file was removed"
+  ;;
+farthest_point_sampling)
+  run "$lion" --sources fps:6 --output fps.npy --sources-output chosen.txt --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  expect_shape fps.npy "6 8356 float64"
+  [ "$(head -1 chosen.txt)" = 0 ] || fail "fps does not start at vertex 0"
+  [ "$(sort -u chosen.txt | wc -l)" -eq 6 ] || fail "fps chose a vertex twice"
+  same_as_dggvtp fps.npy "$lion" "$(cat chosen.txt)"
+  # each source is the vertex farthest from the ones before it (smallest index on ties)
+  for k in 1 2 3 4 5; do
+    paste $(for j in $(seq 0 $((k - 1))); do echo "r$j.txt"; done) |
+      awk '{ m = $1; for (i = 2; i <= NF; ++i) if ($i + 0 < m + 0) m = $i; print NR - 1, m }' |
+      sort -k2,2gr -k1,1n | head -1 | cut -d' ' -f1 > expected
+    [ "$(cat expected)" = "$(sed -n "$((k + 1))p" chosen.txt)" ] ||
+      fail "source $k is $(sed -n "$((k + 1))p" chosen.txt), the farthest vertex is $(cat expected)"
+  done
+  run "$lion" --sources fps:6 --output fps2.npy --threads 2 --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  cmp -s fps.npy fps2.npy || fail "fps on 2 threads: other bytes"
+  if [ "$mpiexec" != none ] && command -v "$mpiexec" >/dev/null 2>&1; then
+    mpi 2 "$lion" --sources fps:6 --output fps3.npy --sources-output chosen3.txt --quiet > mpi.log 2>&1 ||
+      fail "mpirun fps: $(cat mpi.log)"
+    cmp -s fps.npy fps3.npy && cmp -s chosen.txt chosen3.txt || fail "fps on 2 ranks: other bytes"
+  else
+    echo "fps under MPI skipped: no MPI"
+  fi
+  ;;
+farthest_point_sampling_resumes)
+  run "$lion" --sources fps:40 --output ref.npy --sources-output ref.txt --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  "$batch" "$lion" --sources fps:40 --output out.npy --quiet 2>/dev/null &
+  pid=$!
+  for ((i = 0; i < 600; ++i)); do [ -e out.npy.checkpoint/fps_state ] && break; kill -0 "$pid" 2>/dev/null || break; sleep 0.05; done
+  kill -9 "$pid"; wait "$pid" 2>/dev/null
+  [ -e out.npy.checkpoint/fps_state ] || fail "no farthest-point state recorded before the run ended"
+  run "$lion" --sources fps:40 --output out.npy --sources-output out.txt --stats st.json --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  cmp -s ref.npy out.npy && cmp -s ref.txt out.txt || fail "the resumed fps run differs"
+  [ "$(json_field st.json rows_resumed)" -gt 0 ] || fail "nothing was resumed"
+  ;;
+progress)
+  run "$spot" --sources fps:3 --output out.npy --progress
+  [ "$rc" -eq 0 ] || fail "$err"
+  printf '%s\n' "$err" | grep -q "dggvtp-batch: 3/3 rows (100.0%)" || fail "no progress line: $err"
+  run "$spot" --sources fps:3 --output out.npy
+  [ -z "$err" ] || fail "progress without --progress nor a terminal: $err"
+  ;;
+*)
+  fail "unknown case"
+  ;;
+esac
+exit 0
