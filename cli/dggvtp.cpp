@@ -7,7 +7,9 @@
 // or to chosen targets, and shortest paths, exact (VTP) or accuracy-controlled (DGG-VTP). The
 // command-line contract is documented in README.md and in `dggvtp --help`; scripts depend on it.
 
+#include <dggvtp/command_line.h>
 #include <dggvtp/load_mesh.h>
+#include <dggvtp/npy.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -107,10 +109,10 @@ finite, OFF files with texture coordinates (STOFF), binary OFF with colours, and
 (SKEL), which CGAL's reader cannot read safely. Bad usage: exit status 1.
 )";
 
-struct Usage_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
+using dggvtp::json_string;
+using dggvtp::parse_number;
+using dggvtp::peak_rss_mb;
+using dggvtp::Usage_error;
 
 // A vertex of the file or a 3D point, as --source, --target and --path-to give them
 struct Place
@@ -120,15 +122,13 @@ struct Place
   std::array<double, 3> point{}; // located at the nearest point of the surface
 };
 
-struct Options
+struct Options : dggvtp::Propagation_options
 {
   std::string mesh;
   std::vector<Place> sources;   // in the order given: a label is a number in it
   std::vector<Place> targets;
   std::vector<Place> path_targets;
   double max_distance = std::numeric_limits<double>::infinity();
-  double epsilon = 0.;
-  std::string precision = "double";
   long threads = 1;
   std::string output;
   std::string labels;
@@ -149,26 +149,10 @@ struct Options
   }
 };
 
-template <class T>
-T parse_number(const std::string& option, const std::string& text)
-{
-  const char* begin = text.c_str();
-  char* end = nullptr;
-  errno = 0;
-  T value{};
-  if(std::is_floating_point<T>::value)
-    value = T(std::strtod(begin, &end));
-  else if(!text.empty() && text[0] != '-')
-    value = T(std::strtoull(begin, &end, 10));
-  if(end == begin || end == nullptr || *end != '\0' || errno == ERANGE)
-    throw Usage_error("invalid value '" + text + "' for " + option);
-  return value;
-}
 
 Options parse_options(int argc, char** argv)
 {
   Options options;
-  bool exact = false, epsilon = false;
   const auto places_of = [&](const std::string& option) -> std::vector<Place>& {
     return option == "--source" ? options.sources : option == "--target" ? options.targets : options.path_targets;
   };
@@ -215,21 +199,8 @@ Options parse_options(int argc, char** argv)
       if(options.output_format != "text" && options.output_format != "npy")
         throw Usage_error("--output-format must be text or npy");
     }
-    else if(arg == "--exact")
-      exact = true;
-    else if(arg == "--epsilon")
-    {
-      options.epsilon = parse_number<double>(arg, value());
-      if(!(options.epsilon >= 0.) || !std::isfinite(options.epsilon))
-        throw Usage_error("--epsilon must be a finite number >= 0");
-      epsilon = true;
-    }
-    else if(arg == "--precision")
-    {
-      options.precision = value();
-      if(options.precision != "double" && options.precision != "float")
-        throw Usage_error("--precision must be double or float");
-    }
+    else if(options.parse(arg, value))
+      continue;
     else if(arg == "--threads")
       options.threads = long(parse_number<std::size_t>(arg, value()));
     else if(arg == "--output" || arg == "--stats" || arg == "--labels" || arg == "--paths")
@@ -252,8 +223,7 @@ Options parse_options(int argc, char** argv)
   }
   if(options.mesh.empty())
     throw Usage_error("no MESH given");
-  if(exact && epsilon && options.epsilon > 0.)
-    throw Usage_error("--exact and --epsilon E > 0 contradict each other");
+  options.check();
   if(options.sources.empty())
     options.sources.push_back(Place());
   if(options.stops_early() && !(options.output.empty() && options.labels.empty()))
@@ -677,12 +647,6 @@ Run compute(dggvtp::Loaded_soup& soup, const Options& options)
   return run;
 }
 
-double peak_rss_mb()
-{
-  rusage usage;
-  getrusage(RUSAGE_SELF, &usage);
-  return double(usage.ru_maxrss) / 1024.;
-}
 
 // "%.17g\n" as printf writes it (and "inf\n"), with std::to_chars: printf per line took most of
 // the writing time. At most 25 characters ("-1.2345678901234567e-308\n").
@@ -712,22 +676,6 @@ char* put_little_endian(T value, char* out)
   return out;
 }
 
-// The header of a NumPy .npy file, format version 1.0, of a one-dimensional array of `count`
-// values of type `descr`: the magic string, the version, the length of the header's dictionary
-// (little-endian), and the dictionary padded with spaces and ended by a newline so that the data
-// starts at a multiple of 64 bytes.
-std::string npy_header(const char* descr, std::size_t count)
-{
-  std::string dictionary =
-    std::string("{'descr': '") + descr + "', 'fortran_order': False, 'shape': (" + std::to_string(count) + ",), }";
-  const std::size_t preamble = 10; // magic (6 bytes), version (2), header length (2)
-  dictionary.append((64 - (preamble + dictionary.size() + 1) % 64) % 64, ' ');
-  dictionary += '\n';
-  std::string header("\x93" "NUMPY\x01\x00", 8);
-  header += char(dictionary.size() & 0xff);
-  header += char(dictionary.size() >> 8);
-  return header + dictionary;
-}
 
 // Writes `header`, then each value formatted by `put` (at most 32 bytes), through an Output_file
 // in blocks of 1 MB.
@@ -758,7 +706,7 @@ void write_values(const std::string& path, const std::string& header, const std:
 void write_distances(const std::vector<double>& distances, const std::string& path, const std::string& format)
 {
   if(format == "npy")
-    write_values(path, npy_header("<f8", distances.size()), distances, put_little_endian<double>);
+    write_values(path, dggvtp::npy_header("<f8", "(" + std::to_string(distances.size()) + ",)"), distances, put_little_endian<double>);
   else
     write_values(path, std::string(), distances, put_distance_line);
 }
@@ -766,7 +714,7 @@ void write_distances(const std::vector<double>& distances, const std::string& pa
 void write_labels(const std::vector<long long>& labels, const std::string& path, const std::string& format)
 {
   if(format == "npy")
-    write_values(path, npy_header("<i8", labels.size()), labels, put_little_endian<long long>);
+    write_values(path, dggvtp::npy_header("<i8", "(" + std::to_string(labels.size()) + ",)"), labels, put_little_endian<long long>);
   else
     write_values(path, std::string(), labels, put_label_line);
 }
@@ -822,24 +770,6 @@ void write_paths(const Run& run, const Options& options)
   file.commit();
 }
 
-std::string json_string(const std::string& s)
-{
-  std::string out = "\"";
-  for(char c : s)
-  {
-    if(c == '"' || c == '\\')
-      out += '\\';
-    if(static_cast<unsigned char>(c) < 0x20)
-    {
-      char buffer[8];
-      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-      out += buffer;
-    }
-    else
-      out += c;
-  }
-  return out + "\"";
-}
 
 int run_main(int argc, char** argv)
 {

@@ -23,6 +23,7 @@
 // (or the parallel one, which gives the same bits) as `dggvtp --source N`.
 
 #include <dggvtp/batch_io.h>
+#include <dggvtp/command_line.h>
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/npy.h>
 
@@ -106,10 +107,10 @@ Exit status: 0 success, 1 bad usage, 2 bad input (unreadable mesh, bad source li
 of another command, write error), with one line on stderr starting with 'error:'.
 )";
 
-struct Usage_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
+using dggvtp::json_string;
+using dggvtp::parse_number;
+using dggvtp::peak_rss_mb;
+using dggvtp::Usage_error;
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
@@ -118,7 +119,7 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 // Options
 // =============================================================================================
 
-struct Options
+struct Options : dggvtp::Propagation_options
 {
   std::string mesh;
   std::string sources;          // FILE, all or fps:K
@@ -127,34 +128,16 @@ struct Options
   std::string sources_output;   // optional
   std::string stats;            // optional
   Npy_dtype dtype = Npy_dtype::float64;
-  double epsilon = 0.;
-  std::string precision = "double";
   long threads = 1;             // per process, 0 = all cores
   bool progress = false;        // forced on by --progress
   bool quiet = false;
   bool help = false;
 };
 
-template <class T>
-T parse_number(const std::string& option, const std::string& text)
-{
-  const char* begin = text.c_str();
-  char* end = nullptr;
-  errno = 0;
-  T value{};
-  if(std::is_floating_point<T>::value)
-    value = T(std::strtod(begin, &end));
-  else if(!text.empty() && text[0] != '-' && text[0] != '+' && !std::isspace(static_cast<unsigned char>(text[0])))
-    value = T(std::strtoull(begin, &end, 10));
-  if(end == begin || end == nullptr || *end != '\0' || errno == ERANGE)
-    throw Usage_error("invalid value '" + text + "' for " + option);
-  return value;
-}
 
 Options parse_options(int argc, char** argv)
 {
   Options options;
-  bool exact = false, epsilon = false;
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -198,21 +181,8 @@ Options parse_options(int argc, char** argv)
       else
         throw Usage_error("--dtype must be float64 or float32");
     }
-    else if(arg == "--exact")
-      exact = true;
-    else if(arg == "--epsilon")
-    {
-      options.epsilon = parse_number<double>(arg, value());
-      if(!(options.epsilon >= 0.) || !std::isfinite(options.epsilon))
-        throw Usage_error("--epsilon must be a finite number >= 0");
-      epsilon = true;
-    }
-    else if(arg == "--precision")
-    {
-      options.precision = value();
-      if(options.precision != "double" && options.precision != "float")
-        throw Usage_error("--precision must be double or float");
-    }
+    else if(options.parse(arg, value))
+      continue;
     else if(arg == "--threads")
     {
       const std::size_t t = parse_number<std::size_t>(arg, value());
@@ -239,8 +209,7 @@ Options parse_options(int argc, char** argv)
     throw Usage_error("no --output given");
   if(options.output == "-")
     throw Usage_error("--output must be a file (rows are written at their offsets)");
-  if(exact && epsilon && options.epsilon > 0.)
-    throw Usage_error("--exact and --epsilon E > 0 contradict each other");
+  options.check();
   if(options.sources.compare(0, 4, "fps:") == 0)
     parse_number<std::size_t>("--sources fps:K", options.sources.substr(4));
   if(options.checkpoint.empty())
@@ -832,31 +801,7 @@ double cpu_seconds()
          1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
-double peak_rss_mb()
-{
-  rusage usage;
-  getrusage(RUSAGE_SELF, &usage);
-  return double(usage.ru_maxrss) / 1024.;
-}
 
-std::string json_string(const std::string& s)
-{
-  std::string out = "\"";
-  for(char c : s)
-  {
-    if(c == '"' || c == '\\')
-      out += '\\';
-    if(static_cast<unsigned char>(c) < 0x20)
-    {
-      char buffer[8];
-      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-      out += buffer;
-    }
-    else
-      out += c;
-  }
-  return out + "\"";
-}
 
 // =============================================================================================
 // The run

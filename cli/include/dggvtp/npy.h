@@ -37,10 +37,13 @@ inline std::string npy_descr(Npy_dtype dtype)
 // The bytes before the data of a rows x columns array: the magic string, the version (1.0), the
 // header's length (2 bytes, little-endian) and the header, a Python dict literal padded with
 // spaces and ended by '\n' so that the data starts at a multiple of 64 bytes.
-inline std::string npy_header(Npy_dtype dtype, std::size_t rows, std::size_t columns)
+// The header of a .npy file, format version 1.0, of an array of `descr` values (e.g. "<f8") of
+// shape `shape` (a Python tuple, e.g. "(3,)"): the magic string, the version, the length of the
+// dictionary (little-endian), and the dictionary padded with spaces and ended by a newline so that
+// the data starts at a multiple of 64 bytes.
+inline std::string npy_header(const std::string& descr, const std::string& shape)
 {
-  std::string dict = "{'descr': '" + npy_descr(dtype) + "', 'fortran_order': False, 'shape': (" +
-                     std::to_string(rows) + ", " + std::to_string(columns) + "), }";
+  std::string dict = "{'descr': '" + descr + "', 'fortran_order': False, 'shape': " + shape + ", }";
   const std::size_t prefix = 10; // "\x93NUMPY", 2 version bytes, 2 length bytes
   const std::size_t total = (prefix + dict.size() + 1 + 63) / 64 * 64;
   dict.append(total - prefix - dict.size() - 1, ' ');
@@ -51,6 +54,11 @@ inline std::string npy_header(Npy_dtype dtype, std::size_t rows, std::size_t col
   out += char(dict.size() & 0xff);
   out += char(dict.size() >> 8);
   return out + dict;
+}
+
+inline std::string npy_header(Npy_dtype dtype, std::size_t rows, std::size_t columns)
+{
+  return npy_header(npy_descr(dtype), "(" + std::to_string(rows) + ", " + std::to_string(columns) + ")");
 }
 
 // The size in bytes of the whole file; throws std::overflow_error if it does not fit in 63 bits
