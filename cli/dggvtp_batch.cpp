@@ -194,12 +194,8 @@ Options parse_options(int argc, char** argv)
       options.progress = true;
     else if(arg == "--quiet")
       options.quiet = true;
-    else if(arg.size() > 1 && arg[0] == '-')
-      throw Usage_error("unknown option " + arg);
-    else if(options.mesh.empty())
-      options.mesh = arg;
     else
-      throw Usage_error("more than one MESH given ('" + options.mesh + "' and '" + arg + "')");
+      dggvtp::parse_mesh_argument(arg, options.mesh);
   }
   if(options.mesh.empty())
     throw Usage_error("no MESH given");

@@ -49,14 +49,9 @@ inline bool read_fast_obj(const char* begin, const char* end, Fast_soup& soup)
     if(keyword == "v")
     {
       double c[3];
-      for(double& x : c)
-      {
-        while(q != eol && is_space(*q))
-          ++q;
-        q = read_real(q, eol, x);
-        if(q == nullptr || (q != eol && !is_space(*q)))
-          return false;
-      }
+      q = read_point(q, eol, c);
+      if(q == nullptr)
+        return false;
       while(q != eol && is_space(*q))
         ++q;
       if(q != eol)

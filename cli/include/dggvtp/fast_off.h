@@ -72,14 +72,9 @@ inline bool read_fast_off(const char* begin, const char* end, Fast_soup& soup)
     const char* q = line.data();
     const char* const eol = q + line.size();
     double c[3];
-    for(double& x : c)
-    {
-      while(q != eol && is_space(*q))
-        ++q;
-      q = read_real(q, eol, x);
-      if(q == nullptr || (q != eol && !is_space(*q)))
-        return false;
-    }
+    q = read_point(q, eol, c);
+    if(q == nullptr)
+      return false;
     if(!rest_is_blank(q, eol))
       return false;
     soup.points.emplace_back(c[0], c[1], c[2]);

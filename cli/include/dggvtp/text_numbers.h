@@ -76,6 +76,20 @@ const char* read_real(const char* p, const char* end, T& value)
   return last;
 }
 
+// three coordinates separated by blanks, after blanks; the end of the third, or null
+inline const char* read_point(const char* p, const char* end, double (&c)[3])
+{
+  for(double& x : c)
+  {
+    while(p != end && is_space(*p))
+      ++p;
+    p = read_real(p, end, x);
+    if(p == nullptr || (p != end && !is_space(*p)))
+      return nullptr;
+  }
+  return p;
+}
+
 // an unsigned decimal integer of digits only, at most `max`
 inline const char* read_index(const char* p, const char* end, std::uint64_t max, std::uint64_t& value)
 {
