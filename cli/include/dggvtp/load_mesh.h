@@ -27,6 +27,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -603,6 +604,15 @@ inline std::string lower_case_extension(const std::string& path)
   return extension;
 }
 
+// Every point is the file's own so far: the file's vertices, numbered as in the file (repairs
+// append copies later).
+inline void number_file_vertices(Loaded_soup& soup)
+{
+  soup.file_vertices = soup.points.size();
+  soup.file_vertex_of.resize(soup.points.size());
+  std::iota(soup.file_vertex_of.begin(), soup.file_vertex_of.end(), std::size_t(0));
+}
+
 // A fast reader's soup as load_soup_with_cgal() makes it of the same file, or nothing where one
 // of its checks fails (a face repeating a vertex, too many points for 32-bit indices): that path
 // then refuses the file, or takes it, as before. The fast readers already refuse what else it
@@ -640,10 +650,7 @@ inline std::optional<Loaded_soup> soup_of(Fast_soup& fast)
   }
   std::vector<std::uint32_t>().swap(fast.corners);
   soup.points.swap(fast.points);
-  soup.file_vertices = soup.points.size();
-  soup.file_vertex_of.resize(soup.points.size());
-  for(std::size_t i = 0; i < soup.points.size(); ++i)
-    soup.file_vertex_of[i] = i;
+  number_file_vertices(soup);
   return soup;
 }
 
@@ -666,7 +673,6 @@ inline Loaded_soup load_soup_with_cgal(const std::string& path)
     throw Input_error("cannot read '" + path + "' as a mesh (unsupported format, or an invalid or truncated file)");
   if(soup.points.empty())
     throw Input_error("'" + path + "' has no vertices");
-  soup.file_vertices = soup.points.size();
   for(std::size_t i = 0; i < soup.points.size(); ++i)
     for(int c = 0; c < 3; ++c)
       if(!std::isfinite(soup.points[i][c]))
@@ -678,18 +684,16 @@ inline Loaded_soup load_soup_with_cgal(const std::string& path)
       throw Input_error("face " + std::to_string(f) + " has fewer than 3 vertices");
     for(std::size_t k = 0; k < polygon.size(); ++k)
     {
-      if(polygon[k] >= soup.file_vertices)
+      if(polygon[k] >= soup.points.size())
         throw Input_error("face " + std::to_string(f) + " refers to vertex " + std::to_string(polygon[k]) +
-                          ", but the file has " + std::to_string(soup.file_vertices) + " vertices");
+                          ", but the file has " + std::to_string(soup.points.size()) + " vertices");
       for(std::size_t j = 0; j < k; ++j)
         if(polygon[j] == polygon[k])
           throw Input_error("face " + std::to_string(f) + " uses vertex " + std::to_string(polygon[k]) + " twice");
     }
   }
 
-  soup.file_vertex_of.resize(soup.points.size());
-  for(std::size_t i = 0; i < soup.points.size(); ++i)
-    soup.file_vertex_of[i] = i;
+  internal::number_file_vertices(soup);
   if(soup.points.size() < std::numeric_limits<std::uint32_t>::max() &&
      std::all_of(soup.polygons.begin(), soup.polygons.end(), [](const auto& p) { return p.size() == 3; }))
   {
