@@ -6,7 +6,7 @@
 # (mpirun), the same sources, the configurations alternating; median wall time of REPEAT runs (the whole command: load, solver,
 # rows, output), speed-up against 1 x 1, peak RSS of each rank and CPU seconds of all ranks
 # (from --stats), and a check that every run wrote the same bytes. Prints a Markdown table
-# (README.md, Table 9). On a machine where other work competes for the cores, the CPU seconds
+# (benchmark README, Table 10). On a machine where other work competes for the cores, the CPU seconds
 # tell whether the work grew with the ranks and threads or only had to wait for a core.
 #
 # usage: batch_scaling.sh [MESH [SOURCES [REPEAT [EPSILON]]]]
