@@ -48,12 +48,6 @@ BOOST_AUTO_TEST_CASE(gmpfr_functions_match_double)
   const CGAL::Gmpfr x(-0.75), y(2.5);
   BOOST_TEST(CGAL::to_double(Math::abs(x)) == 0.75);
   BOOST_TEST(CGAL::to_double(Math::sqrt(y)) == std::sqrt(2.5));
-  BOOST_TEST(CGAL::to_double(Math::fmod(CGAL::Gmpfr(7.), y)) == std::fmod(7., 2.5));
-  const auto tol = boost::test_tools::tolerance(1e-15);
-  BOOST_TEST(CGAL::to_double(Math::atan2(x, y)) == std::atan2(-0.75, 2.5), tol);
-  BOOST_TEST(CGAL::to_double(Math::atan2(y, x)) == std::atan2(2.5, -0.75), tol);
-  BOOST_TEST(CGAL::to_double(Math::cos(y)) == std::cos(2.5), tol);
-  BOOST_TEST(CGAL::to_double(Math::sin(y)) == std::sin(2.5), tol);
 }
 
 // DGG-VTP keeps its accuracy promise when computed in CGAL::Gmpfr, against the exact mode in

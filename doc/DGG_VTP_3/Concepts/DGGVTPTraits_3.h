@@ -16,9 +16,9 @@ class DGGVTPTraits_3
 {
 public:
   /// The number type of the coordinates and of the results (the propagation runs in it, but at
-  /// least in `double`). `double` and `float` are supported; it must provide
-  /// `sqrt`, `atan2`, `fmod` (found by argument-dependent lookup or in `std`) and `std::numeric_limits`
-  /// with infinity and epsilon.
+  /// least in `double`): `float`, `double`, `long double`, `CGAL::Gmpfr`, or an exact type with
+  /// square roots (`CGAL::Algebraic_structure_traits<FT>::Is_exact` and `Sqrt`, e.g. `CORE::Expr`).
+  /// Only a square root is asked beyond a field: no angles, no trigonometry.
   typedef unspecified_type FT;
   /// Function objects returning a Cartesian coordinate of the value type of the vertex point map
   /// (`FT operator()(const Point&) const`).

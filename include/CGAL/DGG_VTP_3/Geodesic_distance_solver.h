@@ -71,8 +71,9 @@ struct Face_index_map_of
  * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, with triangle faces.
  * \tparam GeomTraits a model of `DGGVTPTraits_3`; by default the kernel of the mesh's points.
  *         Its `FT` is the number type of the results: `float`, `double`, `long double` or
- *         `CGAL::Gmpfr` (computing at least at its default precision); exact types with square
- *         roots are not supported yet (no infinity, no `atan2`). The propagation runs in `FT`, but
+ *         `CGAL::Gmpfr` (computing at least at its default precision), or an exact type with
+ *         square roots (`CORE::Expr`: no rounding margins; an unreached vertex gets
+ *         `std::numeric_limits<double>::max()`, the type having no infinity). The propagation runs in `FT`, but
  *         at least in `double`: in float, windows that tie within rounding get trimmed in the
  *         wrong order, and the cones lost that way left vertices unreachable (float is kept for
  *         input and output).
@@ -417,7 +418,9 @@ private:
       parameters::get_parameter(np, internal_np::max_distance_t()), std::numeric_limits<double>::infinity());
     if(!(max_distance >= 0.))
       throw std::invalid_argument("the maximum distance must be a number >= 0");
-    query.max_distance = Computation_FT(max_distance);
+    query.max_distance = max_distance < std::numeric_limits<double>::infinity()
+                           ? Computation_FT(max_distance)
+                           : internal::Number_type_math<Computation_FT>::infinity();
     query.record_origins =
       !parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value;
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value)

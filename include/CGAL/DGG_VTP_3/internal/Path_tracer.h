@@ -7,10 +7,10 @@
 #define CGAL_DGG_VTP_3_INTERNAL_PATH_TRACER_H
 
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Vertex_directions.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
-#include <CGAL/number_type_config.h>
 #include <CGAL/number_utils.h>
 
 #include <array>
@@ -160,7 +160,9 @@ private:
       if(u <= tolerance || u >= FT(1) - tolerance)
       {
         // through a vertex w: a leg goes there only where it goes straight on (a flat vertex, or
-        // along a straight border), so it continues at the opposite polar angle, back +- pi
+        // along a straight border), so it continues in the opposite direction, turned by pi one
+        // way round, or at a border the other way round if that leaves the fan, or along the
+        // fan's first edge if both do
         const int kw = u <= tolerance ? int(exit % 3) : int((exit + 1) % 3);
         const Index cw = 3 * f + Index(kw);
         const Index w = m_mesh.source(cw);
@@ -169,27 +171,18 @@ private:
           return;
         Point back{-d.x, -d.y}, at{q.x, q.y};
         change_frame(h, cw, at, back);
-        const FT theta = m_mesh.angle_sum(w);
-        const FT back_angle = m_mesh.corner_start_angle(cw) + Math::atan2(back.y, back.x);
-        FT phi = back_angle + FT(CGAL_PI);
-        if(m_mesh.is_singular(w))
+        const Point straight{FT(1), FT(0)};
+        const Corner_direction<FT, Index> arrival{cw, 0, back.y < FT(0) ? straight : back};
+        Corner_direction<FT, Index> on = arrival;
+        if(!turn_direction(m_mesh, on, true, false, straight))
         {
-          // a border: the corners' angles run from 0 to theta, not around
-          if(phi > theta)
-            phi = back_angle - FT(CGAL_PI);
-          phi = phi < FT(0) ? FT(0) : (phi > theta ? theta : phi);
+          on = arrival;
+          if(!turn_direction(m_mesh, on, false, false, straight))
+            on = Corner_direction<FT, Index>{*m_mesh.corners_begin(w), 0, straight};
         }
-        else
-          phi = phi - theta * FT(std::floor(CGAL::to_double(phi / theta)));
-        Index next_corner = *m_mesh.corners_begin(w);
-        for(const Index* c = m_mesh.corners_begin(w); c != m_mesh.corners_end(w); ++c)
-          if(m_mesh.corner_start_angle(*c) <= phi &&
-             m_mesh.corner_start_angle(*c) >= m_mesh.corner_start_angle(next_corner))
-            next_corner = *c;
-        const FT local = phi - m_mesh.corner_start_angle(next_corner);
-        h = next_corner;
+        h = on.corner;
         p = Point{FT(0), FT(0)};
-        d = Point{Math::cos(local), Math::sin(local)};
+        d = Point{on.vector.x / length_of(on.vector), on.vector.y / length_of(on.vector)};
         entry = h;
         from_corner = true;
         continue;

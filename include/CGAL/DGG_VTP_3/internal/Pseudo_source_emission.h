@@ -9,6 +9,7 @@
 #include <CGAL/DGG_VTP_3/internal/Surface_point.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Vertex_directions.h>
 #include <CGAL/DGG_VTP_3/internal/Window_construction.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
@@ -21,8 +22,8 @@ namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
 
-// Polar angles at a vertex (see Unfolded_mesh::corner_start_angle) of the directions back along
-// the shortest paths found so far; a range when several paths tie.
+// Positions at a vertex (see direction_position()) of the directions back along the shortest
+// paths found so far; a range when several paths tie.
 template <class FT>
 struct Incoming_directions
 {
@@ -54,7 +55,10 @@ public:
   // `bound_epsilon`: epsilon of the windows' distance bound (0: exact, no bound);
   // `fan_half_width`: radians added on both sides of a fan
   Pseudo_source_emission(const Mesh& mesh, FT bound_epsilon, FT fan_half_width)
-    : m_mesh(mesh), m_bound_epsilon(bound_epsilon), m_fan_half_width(fan_half_width)
+    : m_mesh(mesh)
+    , m_bound_epsilon(bound_epsilon)
+    , m_fan_widening(small_turn(fan_half_width))
+    , m_shadow_widening(small_turn(T::shadow_widening()))
   {}
 
   // lines 3-7: vertex `v` at distance `dv` lights all its corners
@@ -73,9 +77,7 @@ public:
   template <class Out>
   void in_shadow(Index v, FT dv, const Incoming_directions<FT>& in, Out& out) const
   {
-    const FT theta = m_mesh.angle_sum(v);
-    const FT widen = T::shadow_widening();
-    in_cone(v, dv, in, T::pi() - widen, theta - T::pi() + widen, out);
+    in_cone(v, dv, in, false, m_shadow_widening, out);
   }
 
   // Lines 11-12 of DGG-VTP: every vertex is a pseudo-source, but only inside its fan, the
@@ -85,10 +87,7 @@ public:
   template <class Out>
   void in_fan(Index v, FT dv, const Incoming_directions<FT>& in, Out& out) const
   {
-    const FT theta = m_mesh.angle_sum(v);
-    const FT left = T::pi(), right = theta - T::pi();
-    in_cone(v, dv, in, (std::min)(left, right) - m_fan_half_width, (std::max)(left, right) + m_fan_half_width,
-            out);
+    in_cone(v, dv, in, !m_mesh.turns_at_least_once(v), m_fan_widening, out);
   }
 
   // Lines 2-7 for a source inside a face (or on an edge, then in both faces): it reaches the
@@ -114,35 +113,35 @@ public:
   }
 
 private:
-  // windows into the faces that meet [back + from, back + to] for some recorded arrival
-  // direction back (a union of cones sliding with back)
+  // Windows into the faces that meet the cone from the straight continuation of the first
+  // recorded arrival direction on one side to that of the last on the other, widened by the
+  // angle of `widening` at both ends: for a saddle (or flat) vertex from in.low turned by pi
+  // counterclockwise to in.high turned by pi clockwise, the shadow; for a convex one (`convex`,
+  // angle sum below 2 pi, where the two continuations cross) from in.low turned by pi clockwise
+  // to in.high turned by pi counterclockwise. A union of cones sliding with the arrival
+  // direction. Corners are compared by rank, counted on around the vertex, then pseudo-angle.
   template <class Out>
-  void in_cone(Index v, FT dv, const Incoming_directions<FT>& in, FT from_back, FT to_back, Out& out) const
+  void in_cone(Index v, FT dv, const Incoming_directions<FT>& in, bool convex, const Point& widening, Out& out) const
   {
-    const FT theta = m_mesh.angle_sum(v);
-    FT from = in.low + from_back;
-    const FT width = (in.high + to_back) - from;
-    if(!(width < theta))
+    Corner_direction<FT, Index> from = direction_at(m_mesh, v, in.low), to = direction_at(m_mesh, v, in.high);
+    const std::int64_t k = m_mesh.corners_end(v) - m_mesh.corners_begin(v);
+    // a closed fan: turns never leave it
+    turn_direction(m_mesh, from, !convex, convex, widening);
+    turn_direction(m_mesh, to, convex, convex, widening);
+    // the cone's ends, one turn apart on the side where the continuations end
+    const std::int64_t from_rank = from.rank + (convex ? k : 0), to_rank = to.rank + (convex ? 0 : k);
+    const FT from_angle = pseudo_angle(from.vector), to_angle = pseudo_angle(to.vector);
+    if(to_rank > from_rank + k || (to_rank == from_rank + k && !(to_angle < from_angle)))
     {
       all_around(v, dv, out);
       return;
     }
-    if(width < FT(0))
+    if(to_rank < from_rank || (to_rank == from_rank && to_angle < from_angle))
       return;
-    from = Number_type_math<FT>::fmod(from, theta);
-    if(from < FT(0))
-      from += theta;
-    // the cone is [from, from + width] on the circle of length theta; corners in turning order
     out.count_pseudo_source();
-    for(const Index* c = m_mesh.corners_begin(v); c != m_mesh.corners_end(v); ++c)
-    {
-      const FT start = m_mesh.corner_start_angle(*c);
-      const FT end = start + m_mesh.corner_angle(*c);
-      const bool meets = (end >= from && start <= from + width) ||
-                         (end + theta >= from && start + theta <= from + width);
-      if(meets)
-        across_corner(v, dv, *c, out);
-    }
+    // a corner that both ends meet is lit once
+    for(std::int64_t r = from_rank; r <= (std::min)(to_rank, from_rank + k - 1); ++r)
+      across_corner(v, dv, m_mesh.corner_of_rank(v, Index(((r % k) + k) % k)), out);
   }
 
   // a full-edge window on the edge opposite `v` in the face of corner `h`, and the distances of
@@ -182,8 +181,9 @@ private:
   }
 
   const Mesh& m_mesh;
-  const FT m_bound_epsilon;  // epsilon of the distance bound (0: exact, no bound)
-  const FT m_fan_half_width; // radians added on both sides of a fan
+  const FT m_bound_epsilon;      // epsilon of the distance bound (0: exact, no bound)
+  const Point m_fan_widening;    // the turn added on both sides of a fan
+  const Point m_shadow_widening; // the turn added on both sides of a shadow, for rounding
 };
 
 } // namespace internal

@@ -8,8 +8,6 @@
 
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 
-#include <CGAL/number_type_config.h>
-
 #include <cmath>
 #include <cstddef>
 
@@ -48,8 +46,8 @@ struct Tuning
   static FT slope_slack() { return Number_type_math<FT>::sqrt(Number_type_math<FT>::machine_epsilon()); }
 
   // A vertex whose angle sum is below 2 pi by less than this (relative) is treated as a saddle
-  // (see Unfolded_mesh: leaning towards saddles is the safe side).
-  static FT flat_tolerance() { return FT(1e-6); }
+  // (see Unfolded_mesh: leaning towards saddles is the safe side); none in exact arithmetic.
+  static FT flat_tolerance() { return Number_type_math<FT>::is_exact ? FT(0) : FT(1e-6); }
 
   // ---- input geometry the propagation can finish on (user manual: input policy) ----------------
 
@@ -64,7 +62,7 @@ struct Tuning
   // at distances d of that size the loops cost at most about 2e4 turns. Fuzzer: a pocket of two
   // triangles of edges 6e-39 hung from a unit triangle ran for ever, in double and float. Needles
   // far shorter than the rounding of the distances are fine (tests: 1e-9 in float).
-  static FT min_relative_edge() { return FT(1e-3) * std::numeric_limits<FT>::epsilon(); }
+  static FT min_relative_edge() { return FT(1e-3) * Number_type_math<FT>::machine_epsilon(); }
 
   // ---- patches and rounds (Parallel_tag, and memory locality for any tag) --------------------
 
@@ -77,8 +75,6 @@ struct Tuning
   // (1e-6, 730 rounds) 1 to 8 edges change the time by less than the noise; wider bands pop
   // vertices before the windows from other patches can shorten them (windows: +0.1% at 1, +2% at 8).
   static FT band_in_edges() { return FT(4); }
-
-  static FT pi() { return FT(CGAL_PI); }
 };
 
 } // namespace internal

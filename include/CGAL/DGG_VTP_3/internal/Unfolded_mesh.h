@@ -7,9 +7,11 @@
 #define CGAL_DGG_VTP_3_INTERNAL_UNFOLDED_MESH_H
 
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
+#include <CGAL/DGG_VTP_3/internal/Vertex_directions.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
+#include <CGAL/number_type_config.h>
 #include <CGAL/number_utils.h>
 
 #include <cmath>
@@ -57,18 +59,22 @@ public:
   FT length(Index h) const { return m_length[h]; }
   Vec2<FT> apex(Index h) const { return {m_apex_x[h], m_twice_area[face(h)] / m_length[h]}; }
 
-  // the corners at vertex `v`: halfedges `h` with `source(h) == v`, in turning order (see
-  // corner_start_angle) unless `v` is singular
+  // the corners at vertex `v`: halfedges `h` with `source(h) == v`, in turning order (counterclockwise
+  // seen from the faces' front, starting after the border if there is one) unless `v` is
+  // non-manifold
   const Index* corners_begin(Index v) const { return m_vertex_corners.data() + m_vertex_corners_begin[v]; }
   const Index* corners_end(Index v) const { return m_vertex_corners.data() + m_vertex_corners_begin[v + 1]; }
+  // the position of corner `h` among its vertex's corners, and the corner at a position
+  Index corner_rank(Index h) const { return m_corner_rank[h]; }
+  Index corner_of_rank(Index v, Index rank) const { return corners_begin(v)[rank]; }
 
-  // total angle around `v` (2*pi for a flat interior vertex), in radians
-  FT angle_sum(Index v) const { return m_angle_sum[v]; }
-  // the angle of the corner of halfedge `h` at its source
-  FT corner_angle(Index h) const { const Vec2<FT> c = apex(h); return Number_type_math<FT>::atan2(c.y, c.x); }
-  // polar angle at source(h) of the direction of `h`; the corner of `h` spans
-  // [corner_start_angle(h), corner_start_angle(h) + corner_angle(h)], corners in turning order
-  FT corner_start_angle(Index h) const { return m_corner_start_angle[h]; }
+  // the corner after `h` in turning order at source(h): its first edge is the last edge of `h`'s
+  // corner; the one before; `no_halfedge` past a border
+  Index next_in_turn(Index h) const { return m_opposite[prev(h)]; }
+  Index previous_in_turn(Index h) const { return m_opposite[h] == no_halfedge ? no_halfedge : next(m_opposite[h]); }
+  // the angle sum at `v` is at least 2 pi: the straight continuations of a path on its two sides
+  // do not cross (a saddle or a flat vertex)
+  bool turns_at_least_once(Index v) const { return m_turns_at_least_once[v] != 0; }
   // on the border, or where several umbrellas meet: geodesics may turn there at any angle
   bool is_singular(Index v) const { return m_singular[v] != 0; }
   // geodesics may bend there: saddle (angle sum above 2*pi), border or non-manifold vertex
@@ -89,8 +95,8 @@ private:
   std::vector<FT> m_twice_area;             // F: twice the area (the apex's height times the length)
   std::vector<Index> m_vertex_corners_begin;// V+1: CSR offsets into m_vertex_corners
   std::vector<Index> m_vertex_corners;      // 3F: corners grouped by vertex, in turning order
-  std::vector<FT> m_corner_start_angle;     // 3F: polar angle of each corner's first edge
-  std::vector<FT> m_angle_sum;              // V: total angle, radians
+  std::vector<Index> m_corner_rank;         // 3F: position of each corner among its vertex's
+  std::vector<char> m_turns_at_least_once;  // V: angle sum at least 2 pi
   std::vector<char> m_singular;             // V: border or non-manifold vertex
   std::vector<char> m_exact_pseudo_source;  // V: pseudo-source of the exact (VTP) propagation
   std::size_t m_non_manifold_vertices = 0;
@@ -363,26 +369,27 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   }
   xyz = std::vector<FT>(); // its memory is the peak's
 
-  // angle sums, border vertices
-  out.m_angle_sum.assign(nv, FT(0));
+  // border vertices
   out.m_singular.assign(nv, 0);
-  std::vector<FT> corner_angle(3 * nf); // computed once: atan2 is a good part of the unfolding's time
   for(Index h = 0; h < 3 * nf; ++h)
-  {
-    corner_angle[h] = out.corner_angle(h);
-    out.m_angle_sum[out.source(h)] += corner_angle[h];
     if(out.m_opposite[h] == Unfolded_mesh<FT>::no_halfedge)
     {
       out.m_singular[out.source(h)] = 1;
       out.m_singular[out.target(h)] = 1;
     }
-  }
+  // each corner's angle as a unit vector along its last edge: angles are summed as turns
+  // (Angle_sum), never in radians
+  const auto corner_turn = [&out](Index h) {
+    const Vec2<FT> a = out.apex(h);
+    const FT l = out.m_length[Unfolded_mesh<FT>::prev(h)];
+    return Vec2<FT>{a.x / l, a.y / l};
+  };
 
   // Put the corners of each vertex in turning order (corner h, then the corner across the edge
-  // prev(h)), starting after the border if there is one, and give each corner the polar angle
-  // at which it starts, so that a direction at a vertex is one number in [0, angle sum).
+  // prev(h)), starting after the border if there is one, and sum the angles of each closed fan.
   // A vertex whose corners are not one fan (several umbrellas meet there) is singular.
-  out.m_corner_start_angle.assign(3 * nf, FT(0));
+  out.m_corner_rank.assign(3 * nf, 0);
+  std::vector<Angle_sum<FT>> angle_sum(nv);
   // Vertices in the faces' spatial order: their corners' faces are then near each other in memory.
   std::vector<Index> ordered;
   std::vector<char> done(nv, 0);
@@ -398,13 +405,11 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
       if(out.m_opposite[*c] == Unfolded_mesh<FT>::no_halfedge)
         start = *c;
     ordered.clear();
-    FT angle(0);
     Index h = start;
     do
     {
       ordered.push_back(h);
-      out.m_corner_start_angle[h] = angle;
-      angle += corner_angle[h];
+      angle_sum[v].add(corner_turn(h));
       const Index across = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
       if(across == Unfolded_mesh<FT>::no_halfedge)
         break;
@@ -418,6 +423,8 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
       out.m_singular[v] = 1;
       ++out.m_non_manifold_vertices;
     }
+    for(Index* c = first; c != last; ++c)
+      out.m_corner_rank[*c] = Index(c - first);
   }
 
   // Windows wrap around the tip of a closed fan (a cone) about pi / angle times before the ICH
@@ -425,11 +432,14 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   // vertex is one closed fan, its angle sum; at a singular one (border, or several fans meeting
   // there), each fan that closes is walked: a sharp cone may be joined to other faces.
   {
-    const auto check_cone = [](std::size_t v, FT angle) {
-      if(angle < Tuning<FT>::min_cone_angle())
+    const FT min_angle = Tuning<FT>::min_cone_angle();
+    const Vec2<FT> min_turn = small_turn(min_angle);
+    const auto check_cone = [&](std::size_t v, const Angle_sum<FT>& angle) {
+      if(angle.compare(0, min_turn) < 0)
         throw std::invalid_argument("vertex " + std::to_string(v) + " is the tip of a cone of angle " +
-                                    to_short_string(CGAL::to_double(angle)) + " radians (at least " +
-                                    to_short_string(CGAL::to_double(Tuning<FT>::min_cone_angle())) + " is accepted)");
+                                    to_short_string(std::atan2(CGAL::to_double(angle.at.y), CGAL::to_double(angle.at.x))) +
+                                    " radians (at least " + to_short_string(CGAL::to_double(min_angle)) +
+                                    " is accepted)");
     };
     std::vector<char> walked(3 * nf, 0);
     for(std::size_t v = 0; v < nv; ++v)
@@ -437,20 +447,22 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
       if(!out.m_singular[v])
       {
         if(out.corners_begin(Index(v)) != out.corners_end(Index(v)))
-          check_cone(v, out.m_angle_sum[v]);
+          check_cone(v, angle_sum[v]);
         continue;
       }
       for(const Index* first = out.corners_begin(Index(v)); first != out.corners_end(Index(v)); ++first)
       {
-        FT angle(0);
+        if(walked[*first])
+          continue;
+        Angle_sum<FT> angle;
         Index h = *first;
         while(h != no_halfedge && !walked[h])
         {
           walked[h] = 1;
-          angle += corner_angle[h];
+          angle.add(corner_turn(h));
           h = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
         }
-        if(h == *first && angle > FT(0))
+        if(h == *first)
           check_cone(v, angle);
       }
     }
@@ -459,12 +471,18 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   // A flat vertex computed as slightly above 2*pi is harmless as a pseudo-source (its windows
   // are real paths, pruned like any other); one computed slightly below relies on the windows of
   // either side meeting exactly along the straight line through it, which rounding blurs. So
-  // the test leans towards saddles.
-  const FT two_pi = FT(2 * CGAL_PI);
-  const FT flat_tolerance = Tuning<FT>::flat_tolerance();
+  // the test leans towards saddles, by a relative flat_tolerance() of 2 pi (none when exact).
+  const double below = 2 * CGAL_PI * CGAL::to_double(Tuning<FT>::flat_tolerance());
+  const bool exactly = !(below > 0.);
+  const Vec2<FT> two_pi_less = exactly ? Vec2<FT>{FT(1), FT(0)} : Vec2<FT>{FT(std::cos(below)), FT(-std::sin(below))};
   out.m_exact_pseudo_source.assign(nv, 0);
+  out.m_turns_at_least_once.assign(nv, 0);
   for(std::size_t v = 0; v < nv; ++v)
-    out.m_exact_pseudo_source[v] = out.m_singular[v] || out.m_angle_sum[v] > two_pi * (FT(1) - flat_tolerance);
+  {
+    out.m_exact_pseudo_source[v] =
+      out.m_singular[v] || angle_sum[v].compare(exactly ? 2 : 1, two_pi_less) > 0;
+    out.m_turns_at_least_once[v] = angle_sum[v].compare(2, Vec2<FT>{FT(1), FT(0)}) >= 0;
+  }
   return order;
 }
 

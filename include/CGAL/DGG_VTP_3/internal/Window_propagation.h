@@ -15,6 +15,7 @@
 #include <CGAL/DGG_VTP_3/internal/Round_scheduler.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Vertex_directions.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
 #include <CGAL/DGG_VTP_3/internal/Window_construction.h>
 #include <CGAL/DGG_VTP_3/internal/Window_lists.h>
@@ -246,7 +247,7 @@ private:
   // vertices
 
   // Lines 23-24: a path of length `d` reaches `v`, arriving from `direction` (pointing back along
-  // the path, in the frame of `corner`, one of v's corners: polar angle `back` at `v`). Paths that
+  // the path, in the frame of `corner`, one of v's corners: position `back` at `v`). Paths that
   // tie with the best one widen the recorded range of arrival directions: the shadow of a saddle
   // is the union of their shadows.
   void relax(Patch& p, Index v, FT d, Index corner, const Point& direction, Index origin)
@@ -254,7 +255,7 @@ private:
     if(m_scheduler.template hand_off<typename Scheduler::Relax_message>(p.id, m_partition.owner(v), v, d, corner,
                                                                          direction, origin))
       return;
-    const FT back = m_mesh.corner_start_angle(corner) + Number_type_math<FT>::atan2(direction.y, direction.x);
+    const FT back = direction_position(m_mesh, corner, direction);
     const FT dv = m_distance[v];
     Incoming_directions<FT>& in = m_incoming[v];
     if(d < dv - T::rounding_margin(dv) || dv == infinity())

@@ -7,6 +7,8 @@
 #define CGAL_DGG_VTP_3_INTERNAL_NUMBER_TYPE_MATH_H
 
 #include <CGAL/config.h>
+#include <CGAL/number_type_basic.h>
+#include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,23 +28,36 @@ namespace internal {
 // from int and double, in one place: supporting a number type means specialising this struct.
 // std::numeric_limits is not used elsewhere: for a class type that does not specialise it (as
 // CGAL::Gmpfr does not), infinity() and epsilon() silently return a default-constructed value
-// (NaN for Gmpfr).
-template <class FT>
+// (NaN for Gmpfr). No angles: the propagation decides with sign tests (see Vertex_directions.h),
+// so a square root is all it needs beyond a field.
+template <class FT, bool exact = Algebraic_structure_traits<FT>::Is_exact::value>
 struct Number_type_math
 {
   static_assert(std::is_floating_point<FT>::value,
-                "DGG_VTP_3 computes in float, double, long double or CGAL::Gmpfr only");
+                "DGG_VTP_3 computes in float, double, long double, CGAL::Gmpfr or an exact type with square "
+                "roots (CORE::Expr, the number type of CGAL's exact kernel with sqrt) only");
 
+  static constexpr bool is_exact = false;
   static FT infinity() { return std::numeric_limits<FT>::infinity(); }
   // the gap between 1 and the next number, 2^(1 - p) for p bits (rounding to nearest errs by half
   // of it, relative); std::numeric_limits calls it epsilon
   static FT machine_epsilon() { return std::numeric_limits<FT>::epsilon(); }
   static FT sqrt(FT x) { return std::sqrt(x); }
   static FT abs(FT x) { return std::abs(x); }
-  static FT atan2(FT y, FT x) { return std::atan2(y, x); }
-  static FT fmod(FT x, FT y) { return std::fmod(x, y); }
-  static FT cos(FT x) { return std::cos(x); }
-  static FT sin(FT x) { return std::sin(x); }
+};
+
+// An exact number type with square roots (CGAL's Algebraic_structure_traits: Is_exact, Sqrt): no
+// rounding, so every rounding margin is zero (machine_epsilon() is 0) and the propagation is the
+// algorithm in exact arithmetic. Such a type has no infinity: an unreached vertex gets the largest
+// double instead, which no distance on a mesh of finite double coordinates reaches.
+template <class FT>
+struct Number_type_math<FT, true>
+{
+  static constexpr bool is_exact = true;
+  static FT infinity() { return FT((std::numeric_limits<double>::max)()); }
+  static FT machine_epsilon() { return FT(0); }
+  static FT sqrt(const FT& x) { return CGAL::sqrt(x); }
+  static FT abs(const FT& x) { return CGAL::abs(x); }
 };
 
 #ifdef CGAL_USE_MPFR
@@ -52,6 +67,8 @@ struct Number_type_math
 template <>
 struct Number_type_math<Gmpfr>
 {
+  static constexpr bool is_exact = false;
+
   static Gmpfr infinity()
   {
     Gmpfr r(0, Gmpfr::get_default_precision());
@@ -71,10 +88,6 @@ struct Number_type_math<Gmpfr>
 
   static Gmpfr sqrt(const Gmpfr& x) { return unary(mpfr_sqrt, x); }
   static Gmpfr abs(const Gmpfr& x) { return unary(mpfr_abs, x); }
-  static Gmpfr cos(const Gmpfr& x) { return unary(mpfr_cos, x); }
-  static Gmpfr sin(const Gmpfr& x) { return unary(mpfr_sin, x); }
-  static Gmpfr atan2(const Gmpfr& y, const Gmpfr& x) { return binary(mpfr_atan2, y, x); }
-  static Gmpfr fmod(const Gmpfr& x, const Gmpfr& y) { return binary(mpfr_fmod, x, y); }
 
 private:
   static Gmpfr::Precision_type precision(const Gmpfr& x)
@@ -87,14 +100,6 @@ private:
   {
     Gmpfr r(0, precision(x));
     f(r.fr(), x.fr(), mpfr_get_default_rounding_mode());
-    return r;
-  }
-
-  template <class Function>
-  static Gmpfr binary(Function f, const Gmpfr& x, const Gmpfr& y)
-  {
-    Gmpfr r(0, (std::max)(precision(x), precision(y)));
-    f(r.fr(), x.fr(), y.fr(), mpfr_get_default_rounding_mode());
     return r;
   }
 };
