@@ -64,7 +64,8 @@ struct Face_index_map_of
  * propagation: exact (the VTP algorithm) or, with a positive accuracy, by DGG-VTP.
  *
  * The constructor does all the per-mesh work once (edge lengths, every triangle unfolded onto each
- * of its edges, vertex angle sums); the mesh is not read again afterwards and may be destroyed.
+ * of its edges, the corners around each vertex); the mesh is not read again afterwards and may be
+ * destroyed.
  * Queries are `const` and keep their scratch to themselves, so one solver may serve several
  * threads at once.
  *
