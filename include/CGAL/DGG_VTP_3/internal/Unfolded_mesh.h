@@ -58,6 +58,13 @@ public:
   Index opposite(Index h) const { return m_opposite[h]; }
   FT length(Index h) const { return m_length[h]; }
   Vec2<FT> apex(Index h) const { return {m_apex_x[h], m_twice_area[face(h)] / m_length[h]}; }
+  // the unit vector along the last edge of the corner of `h`: its angle is the corner's angle
+  Vec2<FT> unit_apex(Index h) const
+  {
+    const Vec2<FT> a = apex(h);
+    const FT l = m_length[prev(h)];
+    return {a.x / l, a.y / l};
+  }
 
   // the corners at vertex `v`: halfedges `h` with `source(h) == v`, in turning order (counterclockwise
   // seen from the faces' front, starting after the border if there is one) unless `v` is
@@ -377,13 +384,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
       out.m_singular[out.source(h)] = 1;
       out.m_singular[out.target(h)] = 1;
     }
-  // each corner's angle as a unit vector along its last edge: angles are summed as turns
-  // (Angle_sum), never in radians
-  const auto corner_turn = [&out](Index h) {
-    const Vec2<FT> a = out.apex(h);
-    const FT l = out.m_length[Unfolded_mesh<FT>::prev(h)];
-    return Vec2<FT>{a.x / l, a.y / l};
-  };
+  // angles are summed as turns (Angle_sum of each corner's unit_apex), never in radians
 
   // Put the corners of each vertex in turning order (corner h, then the corner across the edge
   // prev(h)), starting after the border if there is one, and sum the angles of each closed fan.
@@ -409,7 +410,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
     do
     {
       ordered.push_back(h);
-      angle_sum[v].add(corner_turn(h));
+      angle_sum[v].add(out.unit_apex(h));
       const Index across = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
       if(across == Unfolded_mesh<FT>::no_halfedge)
         break;
@@ -459,7 +460,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
         while(h != no_halfedge && !walked[h])
         {
           walked[h] = 1;
-          angle.add(corner_turn(h));
+          angle.add(out.unit_apex(h));
           h = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
         }
         if(h == *first)

@@ -138,21 +138,16 @@ bool turn_direction(const Mesh& mesh, Corner_direction<FT, typename Mesh::Index>
 {
   using Index = typename Mesh::Index;
   using Point = Vec2<FT>;
-  // The unit vector along the corner's last edge; clockwise turns work in each corner's mirror
-  // image across its bisector, where the last edge is +x and the first edge at that same vector,
+  // Clockwise turns work in each corner's mirror image across its bisector, where the last edge
+  // is +x and the first edge at the unit vector along the last edge (Unfolded_mesh::unit_apex),
   // so that one loop serves both ways.
-  const auto unit_apex = [&mesh](Index c) {
-    const Point a = mesh.apex(c);
-    const FT l = mesh.length(Mesh::prev(c));
-    return Point{a.x / l, a.y / l};
-  };
   const auto mirror = [](const Point& t, const Point& u) { return Point{dot(t, u), cross(t, u)}; };
   // T, given as a vector in the current corner's (working) frame whose angle from +x in [0, 2 pi)
   // is the turn still to make, reached corner by corner
   const auto walk = [&](Point t) {
     for(;;)
     {
-      const Point u = unit_apex(d.corner);
+      const Point u = mesh.unit_apex(d.corner);
       if(t.y >= FT(0) && cross(t, u) >= FT(0))
         break;
       const Index n = counterclockwise ? mesh.next_in_turn(d.corner) : mesh.previous_in_turn(d.corner);
@@ -162,7 +157,7 @@ bool turn_direction(const Mesh& mesh, Corner_direction<FT, typename Mesh::Index>
       d.corner = n;
       d.rank += counterclockwise ? 1 : -1;
     }
-    d.vector = counterclockwise ? t : mirror(t, unit_apex(d.corner));
+    d.vector = counterclockwise ? t : mirror(t, mesh.unit_apex(d.corner));
     if(cross(d.vector, mesh.apex(d.corner)) == FT(0))
     {
       const Index n = mesh.next_in_turn(d.corner);
@@ -175,13 +170,13 @@ bool turn_direction(const Mesh& mesh, Corner_direction<FT, typename Mesh::Index>
     }
     return true;
   };
-  const Point t = counterclockwise ? d.vector : mirror(d.vector, unit_apex(d.corner));
+  const Point t = counterclockwise ? d.vector : mirror(d.vector, mesh.unit_apex(d.corner));
   if(!by_more_than_pi)
     return walk(Point{-(t.x * turn_s.x + t.y * turn_s.y), -(t.y * turn_s.x - t.x * turn_s.y)});
   // pi first and then s, so that the turn left to make stays below 2 pi
   if(!walk(Point{-t.x, -t.y}))
     return false;
-  const Point r = counterclockwise ? d.vector : mirror(d.vector, unit_apex(d.corner));
+  const Point r = counterclockwise ? d.vector : mirror(d.vector, mesh.unit_apex(d.corner));
   return walk(Point{r.x * turn_s.x - r.y * turn_s.y, r.x * turn_s.y + r.y * turn_s.x});
 }
 
