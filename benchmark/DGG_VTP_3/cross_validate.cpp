@@ -3,23 +3,26 @@
 //
 // Author(s): DGG-VTP for CGAL team
 //
-// Cross-validation of the double computation against the same computation in CGAL::Gmpfr:
+// Cross-validation of the double computation against the same computation in CGAL::Gmpfr, or in
+// CGAL's exact kernel with square roots (CORE::Expr, for meshes of a few dozen faces):
 //
-//   cross_validate MESH [--precision P] [--epsilon E] [--source N]...
+//   cross_validate MESH [--precision P | --exact-kernel] [--epsilon E] [--source N]...
 //
 // The mesh is loaded as dggvtp loads it (vertex i is the i-th vertex of the file) into a
 // Surface_mesh over double and one over CGAL::Simple_cartesian<CGAL::Gmpfr>, the Gmpfr default
-// precision being P bits (default 150); both run from the same sources (default vertex 0), exact
-// (default) or DGG-VTP with accuracy E. Prints a Markdown table row: the mesh, its vertices, the
-// mode, P, the largest relative difference |d_double - d_Gmpfr| / d_Gmpfr over the vertices (the
-// difference computed in Gmpfr), the vertex where it is, the vertices where one run reaches and the
-// other does not, the time of each run, and the precision the Gmpfr distances came out with (CGAL's
-// Gmpfr computes at the larger of its operands' precisions, and a Gmpfr made from an int has 256
-// bits, from a double 512).
+// precision being P bits (default 150), or over CGAL::Exact_predicates_exact_constructions_kernel_with_sqrt;
+// both run from the same sources (default vertex 0), exact (default) or DGG-VTP with accuracy E.
+// Prints a Markdown table row: the mesh, its vertices, the mode, P ("exact" for the exact kernel),
+// the largest relative difference |d_double - d_reference| / d_reference over the vertices (the
+// difference computed in the reference's type), the vertex where it is, the vertices where one
+// run reaches and the other does not, the time of each run, and the precision the Gmpfr distances
+// came out with (CGAL's Gmpfr computes at the larger of its operands' precisions; the propagation
+// makes its numbers at the default precision).
 
 #include <dggvtp/load_mesh.h>
 
 #include <CGAL/DGG_VTP_3.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel_with_sqrt.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpfr.h>
 #include <CGAL/Simple_cartesian.h>
@@ -56,30 +59,73 @@ struct Run
   }
 };
 
+// The largest relative difference of `in_double` from `reference` and where it is, and the
+// vertices that one of them reaches and the other does not
+struct Comparison
+{
+  double worst = 0.;
+  std::size_t worst_vertex = 0;
+  std::size_t reach_differs = 0;
+};
+
+template <class FT>
+Comparison compare(const std::vector<double>& in_double, const std::vector<FT>& reference)
+{
+  const FT unreached = CGAL::DGG_VTP_3::internal::Number_type_math<FT>::infinity();
+  Comparison c;
+  for(std::size_t i = 0; i < reference.size(); ++i)
+  {
+    const FT& exact = reference[i];
+    const double d = in_double[i];
+    if(exact == unreached || !std::isfinite(d))
+    {
+      c.reach_differs += (exact == unreached) != std::isinf(d);
+      continue;
+    }
+    if(exact == FT(0)) // a source
+      continue;
+    const double relative = CGAL::to_double(CGAL::abs(FT(d) - exact) / exact);
+    if(!(relative <= c.worst))
+    {
+      c.worst = relative;
+      c.worst_vertex = i;
+    }
+  }
+  return c;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
   if(argc < 2)
   {
-    std::cerr << "usage: cross_validate MESH [--precision P] [--epsilon E] [--source N]...\n";
+    std::cerr << "usage: cross_validate MESH [--precision P | --exact-kernel] [--epsilon E] [--source N]...\n";
     return 1;
   }
   try
   {
     const std::string path = argv[1];
     long precision = 150;
+    bool exact_kernel = false;
     double epsilon = 0.;
     std::vector<std::size_t> sources;
-    for(int i = 2; i + 1 < argc; i += 2)
+    for(int i = 2; i < argc; ++i)
     {
       const std::string option = argv[i];
+      if(option == "--exact-kernel")
+      {
+        exact_kernel = true;
+        continue;
+      }
+      if(i + 1 == argc)
+        throw std::invalid_argument("option " + option + " needs a value");
       if(option == "--precision")
-        precision = std::stol(argv[i + 1]);
+        precision = std::stol(argv[++i]);
       else if(option == "--epsilon")
-        epsilon = std::stod(argv[i + 1]);
+        epsilon = std::stod(argv[++i]);
       else if(option == "--source")
-        sources.push_back(std::stoul(argv[i + 1]));
+        sources.push_back(std::stoul(argv[++i]));
       else
         throw std::invalid_argument("unknown option " + option);
     }
@@ -92,35 +138,30 @@ int main(int argc, char** argv)
       if(s >= soup.file_vertices)
         throw std::invalid_argument("source " + std::to_string(s) + " is not a vertex of the file");
     const Run<CGAL::Exact_predicates_inexact_constructions_kernel> in_double(soup, sources, epsilon);
-    const Run<CGAL::Simple_cartesian<CGAL::Gmpfr>> in_mpfr(soup, sources, epsilon);
-
-    double worst = 0.;
-    std::size_t worst_vertex = 0, reach_differs = 0;
-    for(std::size_t i = 0; i < soup.file_vertices; ++i)
+    Comparison c;
+    double reference_seconds = 0.;
+    std::string bits = "exact", result_bits = "exact";
+    if(exact_kernel)
     {
-      const CGAL::Gmpfr& exact = in_mpfr.distances[i];
-      const double d = in_double.distances[i];
-      if(exact.is_inf() || !std::isfinite(d))
-      {
-        reach_differs += exact.is_inf() != std::isinf(d);
-        continue;
-      }
-      if(exact == CGAL::Gmpfr(0)) // a source
-        continue;
-      const double relative = CGAL::to_double(CGAL::abs(CGAL::Gmpfr(d) - exact) / exact);
-      if(!(relative <= worst))
-      {
-        worst = relative;
-        worst_vertex = i;
-      }
+      const Run<CGAL::Exact_predicates_exact_constructions_kernel_with_sqrt> in_exact(soup, sources, epsilon);
+      c = compare(in_double.distances, in_exact.distances);
+      reference_seconds = in_exact.seconds;
+    }
+    else
+    {
+      const Run<CGAL::Simple_cartesian<CGAL::Gmpfr>> in_mpfr(soup, sources, epsilon);
+      c = compare(in_double.distances, in_mpfr.distances);
+      reference_seconds = in_mpfr.seconds;
+      bits = std::to_string(precision);
+      result_bits = std::to_string(long(in_mpfr.distances[c.worst_vertex].get_precision()));
     }
     const std::string name = path.substr(path.find_last_of('/') + 1);
     char mode[32] = "exact";
     if(epsilon > 0.)
       std::snprintf(mode, sizeof mode, "DGG-VTP %g", epsilon);
-    std::printf("| %s | %zu | %s | %ld | %.3g | %zu | %zu | %.3f | %.3f | %ld |\n", name.c_str(), soup.file_vertices,
-                mode, precision, worst, worst_vertex, reach_differs, in_double.seconds, in_mpfr.seconds,
-                long(in_mpfr.distances[worst_vertex].get_precision()));
+    std::printf("| %s | %zu | %s | %s | %.3g | %zu | %zu | %.3f | %.3f | %s |\n", name.c_str(), soup.file_vertices,
+                mode, bits.c_str(), c.worst, c.worst_vertex, c.reach_differs, in_double.seconds, reference_seconds,
+                result_bits.c_str());
   }
   catch(const std::exception& e)
   {

@@ -64,4 +64,30 @@ BOOST_AUTO_TEST_CASE(gmpfr_dgg_vtp_within_epsilon_of_exact)
   check_distances(in_double, exact, 0, Sm_d::tolerance, "pinion, exact in Sm_d against exact in Sm_mpfr");
 }
 
+// The propagation computes at the default precision the user set, not at the 256 or 512 bits
+// of CGAL::Gmpfr's constructors from int and double (the input points are made from doubles):
+// every distance comes out at that precision, within its rounding of the 150-bit run.
+BOOST_AUTO_TEST_CASE(gmpfr_computes_at_the_default_precision)
+{
+  const Soup soup = read_soup("spot.ply");
+  const std::vector<double> reference = geodesic_distances(make_mesh<Sm_mpfr::Mesh>(soup), 0);
+  for(long bits : {64L, 100L})
+  {
+    CGAL::Gmpfr::set_default_precision(bits);
+    const auto mesh = make_mesh<Sm_mpfr::Mesh>(soup);
+    auto map = get(CGAL::dynamic_vertex_property_t<CGAL::Gmpfr>(), mesh);
+    CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, map, *vertices(mesh).begin());
+    std::size_t other_precision = 0;
+    std::vector<double> d;
+    for(auto v : vertices(mesh))
+    {
+      other_precision += (get(map, v).get_precision() != bits);
+      d.push_back(CGAL::to_double(get(map, v)));
+    }
+    CGAL::Gmpfr::set_default_precision(Sm_mpfr::precision);
+    BOOST_TEST(other_precision == 0u, other_precision << " distances not at " << bits << " bits");
+    check_distances(d, reference, 0, 1e-15, "spot at " + std::to_string(bits) + " bits against 150 bits");
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -72,7 +72,7 @@ struct Face_index_map_of
  * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, with triangle faces.
  * \tparam GeomTraits a model of `DGGVTPTraits_3`; by default the kernel of the mesh's points.
  *         Its `FT` is the number type of the results: `float`, `double`, `long double` or
- *         `CGAL::Gmpfr` (computing at least at its default precision), or an exact type with
+ *         `CGAL::Gmpfr` (computing at its default precision), or an exact type with
  *         square roots (`CORE::Expr`: no rounding margins; an unreached vertex gets
  *         `std::numeric_limits<double>::max()`, the type having no infinity). The propagation runs in `FT`, but
  *         at least in `double`: in float, windows that tie within rounding get trimmed in the
@@ -387,7 +387,7 @@ private:
     const double accuracy = parameters::choose_parameter(parameters::get_parameter(np, internal_np::accuracy), 0.);
     if(!(accuracy >= 0.) || !std::isfinite(accuracy))
       throw std::invalid_argument("the accuracy must be a finite number >= 0");
-    return Computation_FT(accuracy);
+    return internal::number<Computation_FT>(accuracy);
   }
 
   template <class VertexRange>
@@ -420,7 +420,7 @@ private:
     if(!(max_distance >= 0.))
       throw std::invalid_argument("the maximum distance must be a number >= 0");
     query.max_distance = max_distance < std::numeric_limits<double>::infinity()
-                           ? Computation_FT(max_distance)
+                           ? internal::number<Computation_FT>(max_distance)
                            : internal::Number_type_math<Computation_FT>::infinity();
     query.record_origins =
       !parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value;

@@ -36,17 +36,17 @@ FT distance_bound(const Vec2<FT>& source, FT b0, FT b1, FT relay_left, FT relay_
   const FT cos_opening = dot(r0, r1) / (length(r0) * length(r1));
   using Math = Number_type_math<FT>;
   // c2: the point of the shorter relay's ray at distance l0; d = |c0 c2|
-  const FT d = l0 * Math::sqrt((std::max)(FT(0), FT(2) - FT(2) * cos_opening));
+  const FT d = l0 * Math::sqrt((std::max)(number<FT>(0), number<FT>(2) - number<FT>(2) * cos_opening));
   if(!(d < l0))
     return inf;
   const FT alpha = l1 / l0;
   FT beta(1);
   if(alpha > FT(0.99))
-    beta = FT(0.5);
+    beta = number<FT>(0.5);
   else
   {
-    const FT q = FT(1) / (FT(1) - alpha);
-    const FT disc = q * q - q - FT(2) * eps * l0 * (l0 - d) / (d * d);
+    const FT q = number<FT>(1) / (number<FT>(1) - alpha);
+    const FT disc = q * q - q - number<FT>(2) * eps * l0 * (l0 - d) / (d * d);
     if(disc >= FT(0))
     {
       const FT mu = q - Math::sqrt(disc);
@@ -54,8 +54,8 @@ FT distance_bound(const Vec2<FT>& source, FT b0, FT b1, FT relay_left, FT relay_
         beta = mu;
     }
   }
-  const FT spread = (FT(1) - beta) * d;
-  return l0 + spread * spread / (FT(2) * eps * (l0 - d));
+  const FT spread = (number<FT>(1) - beta) * d;
+  return l0 + spread * spread / (number<FT>(2) * eps * (l0 - d));
 }
 
 // Distance from the pseudo-source to the nearest point of the window's interval.

@@ -63,7 +63,7 @@ public:
     FT total(0);
     for(Index h = 0; h < mesh.number_of_halfedges(); ++h)
       total += mesh.length(h);
-    m_band = mesh.number_of_halfedges() == 0 ? FT(0) : T::band_in_edges() * total / FT(mesh.number_of_halfedges());
+    m_band = mesh.number_of_halfedges() == 0 ? number<FT>(0) : T::band_in_edges() * total / number<FT>(mesh.number_of_halfedges());
   }
 
   std::size_t size() const { return m_patches; }
@@ -85,7 +85,7 @@ private:
   std::vector<Index> m_owner;        // per vertex: the patch that owns it
   std::vector<Index> m_border_begin; // per patch + 1: CSR offsets into m_border
   std::vector<Index> m_border;       // border vertices grouped by owner
-  FT m_band = FT(0);
+  FT m_band = number<FT>(0);
 };
 
 } // namespace internal

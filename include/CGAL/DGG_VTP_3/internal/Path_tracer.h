@@ -55,7 +55,7 @@ public:
   void walk_from_vertex(Index corner, const Point& direction, FT length, Index end_vertex, const Path_point& end_point,
                         std::vector<Path_point>& out) const
   {
-    walk(corner, Point{FT(0), FT(0)}, direction, length, true, end_vertex, end_point, out);
+    walk(corner, Point{number<FT>(0), number<FT>(0)}, direction, length, true, end_vertex, end_point, out);
   }
   void walk_from_point(Index h, const Point& p, const Point& direction, FT length, Index end_vertex,
                        const Path_point& end_point, std::vector<Path_point>& out) const
@@ -84,10 +84,10 @@ public:
     // barycentric coordinates in the frame: p = b1 (len, 0) + b2 c
     const FT b2 = p.y / c.y;
     const FT b1 = (p.x - b2 * c.x) / len;
-    Path_point q{Path_point::FACE, f, {FT(0), FT(0), FT(0)}, Index(-1)};
+    Path_point q{Path_point::FACE, f, {number<FT>(0), number<FT>(0), number<FT>(0)}, Index(-1)};
     q.barycentric[(k + 1) % 3] = b1;
     q.barycentric[(k + 2) % 3] = b2;
-    q.barycentric[k] = FT(1) - b1 - b2;
+    q.barycentric[k] = number<FT>(1) - b1 - b2;
     return q;
   }
 
@@ -100,9 +100,9 @@ private:
       // into the frame of next(from): its origin is (len, 0), its axis along (apex - (len, 0))
       const FT len = m_mesh.length(from);
       const Point c = m_mesh.apex(from);
-      const Point axis = c - Point{len, FT(0)};
+      const Point axis = c - Point{len, number<FT>(0)};
       const FT n = m_mesh.length(Mesh::next(from));
-      const Point q = p - Point{len, FT(0)};
+      const Point q = p - Point{len, number<FT>(0)};
       p = Point{dot(q, axis) / n, cross(axis, q) / n};
       d = Point{dot(d, axis) / n, cross(axis, d) / n};
       from = Mesh::next(from);
@@ -111,8 +111,8 @@ private:
 
   Path_point corner_point(Index f, int k) const
   {
-    Path_point q{Path_point::VERTEX, f, {FT(0), FT(0), FT(0)}, m_mesh.source(3 * f + Index(k))};
-    q.barycentric[k] = FT(1);
+    Path_point q{Path_point::VERTEX, f, {number<FT>(0), number<FT>(0), number<FT>(0)}, m_mesh.source(3 * f + Index(k))};
+    q.barycentric[k] = number<FT>(1);
     return q;
   }
 
@@ -122,14 +122,14 @@ private:
     using Math = Number_type_math<FT>;
     d = Point{d.x / length_of(d), d.y / length_of(d)};
     Index entry = from_corner ? h : Mesh::no_halfedge; // from a corner: leave through the opposite edge
-    const FT tolerance = FT(1024) * Math::machine_epsilon();
+    const FT tolerance = number<FT>(1024) * Math::machine_epsilon();
     for(std::size_t steps = 0; steps <= 3 * m_mesh.number_of_faces(); ++steps)
     {
       // the edge of the face of h the ray leaves through: the nearest crossing ahead
       FT best_t = Math::infinity();
       Index exit = Mesh::no_halfedge;
       FT exit_u(0);
-      const Point corner[3] = {Point{FT(0), FT(0)}, Point{m_mesh.length(h), FT(0)}, m_mesh.apex(h)};
+      const Point corner[3] = {Point{number<FT>(0), number<FT>(0)}, Point{m_mesh.length(h), number<FT>(0)}, m_mesh.apex(h)};
       for(int i = 0; i < 3; ++i)
       {
         const Index e = Mesh::face(h) * 3 + Index((h + i) % 3);
@@ -152,9 +152,9 @@ private:
         }
       }
       const Index f = Mesh::face(h);
-      if(exit == Mesh::no_halfedge || best_t >= length * (FT(1) - tolerance))
+      if(exit == Mesh::no_halfedge || best_t >= length * (number<FT>(1) - tolerance))
         break; // the leg ends in this face
-      const FT u = exit_u < FT(0) ? FT(0) : (exit_u > FT(1) ? FT(1) : exit_u);
+      const FT u = exit_u < FT(0) ? number<FT>(0) : (exit_u > FT(1) ? number<FT>(1) : exit_u);
       Point q = Point{p.x + best_t * d.x, p.y + best_t * d.y};
       length -= best_t;
       if(u <= tolerance || u >= FT(1) - tolerance)
@@ -171,7 +171,7 @@ private:
           return;
         Point back{-d.x, -d.y}, at{q.x, q.y};
         change_frame(h, cw, at, back);
-        const Point straight{FT(1), FT(0)};
+        const Point straight{number<FT>(1), number<FT>(0)};
         const Corner_direction<FT, Index> arrival{cw, 0, back.y < FT(0) ? straight : back};
         Corner_direction<FT, Index> on = arrival;
         if(!turn_direction(m_mesh, on, true, false, straight))
@@ -181,15 +181,15 @@ private:
             on = Corner_direction<FT, Index>{*m_mesh.corners_begin(w), 0, straight};
         }
         h = on.corner;
-        p = Point{FT(0), FT(0)};
+        p = Point{number<FT>(0), number<FT>(0)};
         d = Point{on.vector.x / length_of(on.vector), on.vector.y / length_of(on.vector)};
         entry = h;
         from_corner = true;
         continue;
       }
       const Index o = m_mesh.opposite(exit);
-      Path_point x{Path_point::EDGE, f, {FT(0), FT(0), FT(0)}, Index(-1)};
-      x.barycentric[exit % 3] = FT(1) - u;
+      Path_point x{Path_point::EDGE, f, {number<FT>(0), number<FT>(0), number<FT>(0)}, Index(-1)};
+      x.barycentric[exit % 3] = number<FT>(1) - u;
       x.barycentric[(exit + 1) % 3] = u;
       out.push_back(x);
       if(o == Mesh::no_halfedge)

@@ -50,14 +50,14 @@ public:
     for(std::size_t t = 0; t < points.size(); ++t)
     {
       const Surface_point<FT>& q = points[t];
-      entries.emplace_back(q.face, Entry{Index(t), q.barycentric, infinity(), Index(-1), Index(-1), Point{FT(0), FT(0)}});
+      entries.emplace_back(q.face, Entry{Index(t), q.barycentric, infinity(), Index(-1), Index(-1), Point{number<FT>(0), number<FT>(0)}});
       for(int k = 0; k < 3; ++k)
         if(q.barycentric[k] == FT(0))
         {
           const Surface_point<FT> other = same_point_across_edge(mesh, q, k);
           if(other.face != Index(-1))
             entries.emplace_back(other.face, Entry{Index(t), other.barycentric, infinity(), Index(-1), Index(-1),
-                                                   Point{FT(0), FT(0)}});
+                                                   Point{number<FT>(0), number<FT>(0)}});
         }
     }
     std::stable_sort(entries.begin(), entries.end(),
@@ -122,7 +122,7 @@ public:
     {
       Entry& e = m_entries[i];
       const Index f = m_faces[i];
-      const Point corner[3] = {Point{FT(0), FT(0)}, Point{mesh.length(3 * f), FT(0)}, mesh.apex(3 * f)};
+      const Point corner[3] = {Point{number<FT>(0), number<FT>(0)}, Point{mesh.length(3 * f), number<FT>(0)}, mesh.apex(3 * f)};
       const Point q = position(e.barycentric, corner);
       for(int k = 0; k < 3; ++k)
       {
@@ -157,7 +157,7 @@ public:
   // per target: how its shortest path arrives
   void combine(std::vector<Arrival>& arrivals) const
   {
-    arrivals.assign(m_count, Arrival{infinity(), Index(-1), Index(-1), Point{FT(0), FT(0)}, {FT(0), FT(0), FT(0)}});
+    arrivals.assign(m_count, Arrival{infinity(), Index(-1), Index(-1), Point{number<FT>(0), number<FT>(0)}, {number<FT>(0), number<FT>(0), number<FT>(0)}});
     for(const Entry& e : m_entries)
       if(e.best < arrivals[e.target].distance)
         arrivals[e.target] = Arrival{e.best, e.origin, e.frame, e.direction, e.barycentric};

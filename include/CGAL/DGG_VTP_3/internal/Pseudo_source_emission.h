@@ -27,8 +27,8 @@ namespace internal {
 template <class FT>
 struct Incoming_directions
 {
-  FT low = FT(0);
-  FT high = FT(0);
+  FT low = number<FT>(0);
+  FT high = number<FT>(0);
 };
 
 // What a pseudo-source sends out (paper, Algorithm 1, lines 2-7 and 11-13): from a vertex, for
@@ -96,7 +96,7 @@ public:
   template <class OutInFace>
   void from_surface_point(const Surface_point<FT>& s, Index origin, OutInFace&& out_in_face) const
   {
-    Surface_point<FT> other{Index(-1), {FT(0), FT(0), FT(0)}};
+    Surface_point<FT> other{Index(-1), {number<FT>(0), number<FT>(0), number<FT>(0)}};
     for(int k = 0; k < 3; ++k)
       if(s.barycentric[k] == FT(0))
       {
@@ -153,7 +153,7 @@ private:
     const Index prev = Mesh::prev(h);
     // from target(h) back along its corner's last edge, from source(prev) back along prev
     out.relax(m_mesh.target(h), dv + m_mesh.length(h), across, m_mesh.apex(across), v);
-    out.relax(m_mesh.source(prev), dv + m_mesh.length(prev), prev, Point{FT(1), FT(0)}, v);
+    out.relax(m_mesh.source(prev), dv + m_mesh.length(prev), prev, Point{number<FT>(1), number<FT>(0)}, v);
     const Index t = m_mesh.opposite(across);
     if(t != Mesh::no_halfedge)
       out.add_window(t, window_across_corner(m_mesh, h, dv, m_bound_epsilon, v));
@@ -175,7 +175,7 @@ private:
       out.relax(m_mesh.source(e), to_source, e, q, origin);
       const Index t = m_mesh.opposite(e);
       if(b[(k + 2) % 3] != FT(0) && t != Mesh::no_halfedge) // not on this edge
-        out.add_window(t, window_from_point(m_mesh, e, q, FT(0), length(q - Point{m_mesh.length(e), FT(0)}),
+        out.add_window(t, window_from_point(m_mesh, e, q, number<FT>(0), length(q - Point{m_mesh.length(e), number<FT>(0)}),
                                             to_source, m_bound_epsilon, origin));
     }
   }

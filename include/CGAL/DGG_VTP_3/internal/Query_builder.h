@@ -146,7 +146,7 @@ private:
     }
     if(!(std::abs(sum - 1.) <= tolerance))
       throw std::invalid_argument(std::string("the barycentric coordinates of the ") + what + " must add up to 1");
-    Location l{false, 0, Surface_point<FT>{m_internal_face[i], {FT(0), FT(0), FT(0)}}};
+    Location l{false, 0, Surface_point<FT>{m_internal_face[i], {number<FT>(0), number<FT>(0), number<FT>(0)}}};
     int zeros = 0, last_nonzero = 0;
     bool rescale = false;
     for(int k = 0; k < 3; ++k)
@@ -158,7 +158,7 @@ private:
         continue;
       }
       last_nonzero = k;
-      l.point.barycentric[k] = FT(coordinates[k]);
+      l.point.barycentric[k] = number<FT>(coordinates[k]);
     }
     if(zeros == 2)
       return Location{true, m_mesh.source(3 * l.point.face + Index(last_nonzero)), Surface_point<FT>{}};

@@ -32,7 +32,7 @@ Surface_point<FT> same_point_across_edge(const Unfolded_mesh<FT>& mesh, const Su
 {
   using Mesh = Unfolded_mesh<FT>;
   using Index = typename Mesh::Index;
-  Surface_point<FT> other{Index(-1), {FT(0), FT(0), FT(0)}};
+  Surface_point<FT> other{Index(-1), {number<FT>(0), number<FT>(0), number<FT>(0)}};
   const Index o = mesh.opposite(3 * q.face + (k + 1) % 3);
   if(o == Mesh::no_halfedge)
     return other;

@@ -26,20 +26,20 @@ struct Tuning
   // tolerance: 0.25 times the user's. It is the loosest factor that keeps every vertex of the
   // shared meshes within the user's epsilon (max 0.88 epsilon, fandisk at 1e-4); 1 already gives
   // 3.4 epsilon on fandisk.
-  static FT bound_epsilon(FT accuracy) { return FT(0.25) * accuracy; }
+  static FT bound_epsilon(FT accuracy) { return number<FT>(0.25) * accuracy; }
 
   // Radians added on both sides of a pseudo-source's fan (the paper says sqrt(epsilon); the
   // reference code 3 sqrt(epsilon) of its remapped epsilon).
-  static FT fan_half_width(FT accuracy) { return FT(3) * Number_type_math<FT>::sqrt(bound_epsilon(accuracy)); }
+  static FT fan_half_width(FT accuracy) { return number<FT>(3) * Number_type_math<FT>::sqrt(bound_epsilon(accuracy)); }
 
   // ---- rounding ------------------------------------------------------------------------------
 
   // Ties within this (relative to `scale`) are ties: distances are not compared more finely
   // than rounding allows.
-  static FT rounding_margin(FT scale) { return FT(64) * Number_type_math<FT>::machine_epsilon() * scale; }
+  static FT rounding_margin(FT scale) { return number<FT>(64) * Number_type_math<FT>::machine_epsilon() * scale; }
 
   // Radians by which a saddle's shadow cone is widened for rounding (emitting more is safe).
-  static FT shadow_widening() { return FT(8) * Number_type_math<FT>::sqrt(rounding_margin(FT(1))); }
+  static FT shadow_widening() { return number<FT>(8) * Number_type_math<FT>::sqrt(rounding_margin(number<FT>(1))); }
 
   // Slopes of distance differences come from distances minus sigma, which cancellation may
   // cost up to sqrt(machine epsilon) of.
@@ -47,14 +47,14 @@ struct Tuning
 
   // A vertex whose angle sum is below 2 pi by less than this (relative) is treated as a saddle
   // (see Unfolded_mesh: leaning towards saddles is the safe side); none in exact arithmetic.
-  static FT flat_tolerance() { return Number_type_math<FT>::is_exact ? FT(0) : FT(1e-6); }
+  static FT flat_tolerance() { return Number_type_math<FT>::is_exact ? number<FT>(0) : number<FT>(1e-6); }
 
   // ---- input geometry the propagation can finish on (user manual: input policy) ----------------
 
   // Windows wrap around a sliver tube a number of times that grows like the slivers'
   // length / height, and around a cone about pi / (cone angle) times.
-  static FT max_sliver_ratio() { return FT(1e10); }
-  static FT min_cone_angle() { return FT(1e-4); }
+  static FT max_sliver_ratio() { return number<FT>(1e10); }
+  static FT min_cone_angle() { return number<FT>(1e-4); }
 
   // Windows circle a closed loop of edges (a cone, a pocket of two faces) about
   // rounding_margin(d) / (the loop's length) times before they are pruned, ties being kept: an
@@ -62,7 +62,7 @@ struct Tuning
   // at distances d of that size the loops cost at most about 2e4 turns. Fuzzer: a pocket of two
   // triangles of edges 6e-39 hung from a unit triangle ran for ever, in double and float. Needles
   // far shorter than the rounding of the distances are fine (tests: 1e-9 in float).
-  static FT min_relative_edge() { return FT(1e-3) * Number_type_math<FT>::machine_epsilon(); }
+  static FT min_relative_edge() { return number<FT>(1e-3) * Number_type_math<FT>::machine_epsilon(); }
 
   // ---- patches and rounds (Parallel_tag, and memory locality for any tag) --------------------
 
@@ -74,7 +74,7 @@ struct Tuning
   // A round pops vertices up to this many mean edge lengths beyond the nearest: on bunny_1M
   // (1e-6, 730 rounds) 1 to 8 edges change the time by less than the noise; wider bands pop
   // vertices before the windows from other patches can shorten them (windows: +0.1% at 1, +2% at 8).
-  static FT band_in_edges() { return FT(4); }
+  static FT band_in_edges() { return number<FT>(4); }
 };
 
 } // namespace internal

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <utility>
 #include <stdexcept>
 #include <string>
@@ -58,12 +59,23 @@ public:
   Index opposite(Index h) const { return m_opposite[h]; }
   FT length(Index h) const { return m_length[h]; }
   Vec2<FT> apex(Index h) const { return {m_apex_x[h], m_twice_area[face(h)] / m_length[h]}; }
-  // the unit vector along the last edge of the corner of `h`: its angle is the corner's angle
-  Vec2<FT> unit_apex(Index h) const
+  // A vector along the last edge of the corner of `h`, in its frame: its angle is the corner's
+  // angle, and only its direction is used (angle sums, turns). In the inexact types it is the unit
+  // vector, so that products of many stay in range. In an exact type it is (ab . ac, twice the
+  // area), with the face's area as its only square root: CORE proves a tie (an angle sum of
+  // exactly 2 pi at a flat vertex) at a cost that doubles with every distinct root involved, and
+  // the unit vector would bring in the two edge lengths too (a vertex of six faces: 6 roots
+  // instead of 12).
+  Vec2<FT> last_edge_direction(Index h) const
   {
-    const Vec2<FT> a = apex(h);
-    const FT l = m_length[prev(h)];
-    return {a.x / l, a.y / l};
+    if constexpr(Number_type_math<FT>::is_exact)
+      return {m_corner_dot[h], m_twice_area[face(h)]};
+    else
+    {
+      const Vec2<FT> a = apex(h);
+      const FT l = m_length[prev(h)];
+      return {a.x / l, a.y / l};
+    }
   }
 
   // the corners at vertex `v`: halfedges `h` with `source(h) == v`, in turning order (counterclockwise
@@ -100,6 +112,7 @@ private:
   std::vector<FT> m_length;                 // 3F: length of each halfedge
   std::vector<FT> m_apex_x;                 // 3F: abscissa of the apex in each halfedge's frame
   std::vector<FT> m_twice_area;             // F: twice the area (the apex's height times the length)
+  std::vector<FT> m_corner_dot;             // 3F in exact types (else empty): ab . ac at each corner
   std::vector<Index> m_vertex_corners_begin;// V+1: CSR offsets into m_vertex_corners
   std::vector<Index> m_vertex_corners;      // 3F: corners grouped by vertex, in turning order
   std::vector<Index> m_corner_rank;         // 3F: position of each corner among its vertex's
@@ -293,6 +306,38 @@ inline std::vector<std::uint32_t> matched_halfedges(const std::vector<std::uint3
   return opposite;
 }
 
+// The square roots of the preparation. An exact number type (CORE::Expr) bounds the cost of
+// proving two numbers equal by the product of the degrees of the distinct roots they are built
+// from, and a tie on a symmetric mesh (a tetrahedron, a prism) compares numbers built from every
+// edge length and face area: one root per distinct radicand, and none for a radicand that is the
+// square of a double (integer lengths: 3, 4, 5), keeps that product small (a regular
+// tetrahedron: 2 roots instead of 16). Other number types just take the root.
+template <class FT, bool exact = Number_type_math<FT>::is_exact>
+class Shared_square_roots
+{
+public:
+  FT operator()(const FT& x) { return Number_type_math<FT>::sqrt(x); }
+};
+
+template <class FT>
+class Shared_square_roots<FT, true>
+{
+public:
+  FT operator()(const FT& x)
+  {
+    auto it = m_roots.find(x);
+    if(it == m_roots.end())
+    {
+      const FT nearest(CGAL::to_double(Number_type_math<FT>::sqrt(x)));
+      it = m_roots.emplace(x, nearest * nearest == x ? nearest : Number_type_math<FT>::sqrt(x)).first;
+    }
+    return it->second;
+  }
+
+private:
+  std::map<FT, FT> m_roots;
+};
+
 // Fills the mesh from the coordinates of the vertices (3 per vertex), the vertex at each corner
 // and the opposite of each halfedge (`no_halfedge` on the border), faces in the user's order;
 // checks the geometry. With no opposites given (a triangle soup), each halfedge a->b is matched
@@ -318,10 +363,13 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   out.m_length.resize(3 * nf);
   out.m_apex_x.resize(3 * nf);
   out.m_twice_area.resize(nf);
+  if constexpr(Number_type_math<FT>::is_exact)
+    out.m_corner_dot.resize(3 * nf);
 
   // unfold each triangle onto each of its three edges; the area comes from the two shortest edges
   // (errors name the face by the user's index)
   const double shortest_accepted = CGAL::to_double(Tuning<FT>::min_relative_edge()) * extent;
+  Shared_square_roots<FT> root;
   for(std::size_t fi = 0; fi < nf; ++fi)
   {
     const std::size_t user_face = order[fi];
@@ -340,11 +388,13 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
       const FT* c = p[(k + 2) % 3];
       const FT ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
       const FT ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-      using Math = Number_type_math<FT>;
-      const FT len = Math::sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
+      const FT len = root(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
       const Index hi = Index(3 * fi + k);
       out.m_length[hi] = len;
-      out.m_apex_x[hi] = (ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2]) / len;
+      const FT corner_dot = ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2];
+      out.m_apex_x[hi] = corner_dot / len;
+      if constexpr(Number_type_math<FT>::is_exact)
+        out.m_corner_dot[hi] = corner_dot;
       if(!(len > FT(0)) || !CGAL::is_finite(len) || !CGAL::is_finite(out.m_apex_x[hi]))
         throw degenerate();
       if(CGAL::to_double(len) < shortest_accepted)
@@ -361,7 +411,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
         const FT u[3] = {a[0] - o[0], a[1] - o[1], a[2] - o[2]};
         const FT v[3] = {b[0] - o[0], b[1] - o[1], b[2] - o[2]};
         const FT n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-        twice_area = Math::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        twice_area = root(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
       }
     }
     out.m_twice_area[fi] = twice_area;
@@ -384,7 +434,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
       out.m_singular[out.source(h)] = 1;
       out.m_singular[out.target(h)] = 1;
     }
-  // angles are summed as turns (Angle_sum of each corner's unit_apex), never in radians
+  // angles are summed as turns (Angle_sum of each corner's last_edge_direction), never in radians
 
   // Put the corners of each vertex in turning order (corner h, then the corner across the edge
   // prev(h)), starting after the border if there is one, and sum the angles of each closed fan.
@@ -410,7 +460,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
     do
     {
       ordered.push_back(h);
-      angle_sum[v].add(out.unit_apex(h));
+      angle_sum[v].add(out.last_edge_direction(h));
       const Index across = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
       if(across == Unfolded_mesh<FT>::no_halfedge)
         break;
@@ -460,7 +510,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
         while(h != no_halfedge && !walked[h])
         {
           walked[h] = 1;
-          angle.add(out.unit_apex(h));
+          angle.add(out.last_edge_direction(h));
           h = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
         }
         if(h == *first)
@@ -475,14 +525,14 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   // the test leans towards saddles, by a relative flat_tolerance() of 2 pi (none when exact).
   const double below = 2 * CGAL_PI * CGAL::to_double(Tuning<FT>::flat_tolerance());
   const bool exactly = !(below > 0.);
-  const Vec2<FT> two_pi_less = exactly ? Vec2<FT>{FT(1), FT(0)} : Vec2<FT>{FT(std::cos(below)), FT(-std::sin(below))};
+  const Vec2<FT> two_pi_less = exactly ? Vec2<FT>{number<FT>(1), number<FT>(0)} : Vec2<FT>{number<FT>(std::cos(below)), number<FT>(-std::sin(below))};
   out.m_exact_pseudo_source.assign(nv, 0);
   out.m_turns_at_least_once.assign(nv, 0);
   for(std::size_t v = 0; v < nv; ++v)
   {
     out.m_exact_pseudo_source[v] =
       out.m_singular[v] || angle_sum[v].compare(exactly ? 2 : 1, two_pi_less) > 0;
-    out.m_turns_at_least_once[v] = angle_sum[v].compare(2, Vec2<FT>{FT(1), FT(0)}) >= 0;
+    out.m_turns_at_least_once[v] = angle_sum[v].compare(2, Vec2<FT>{number<FT>(1), number<FT>(0)}) >= 0;
   }
   return order;
 }

@@ -34,14 +34,14 @@ FT pseudo_angle(const Vec2<FT>& t)
 {
   if(t.x >= FT(0))
     return t.y / (t.x + t.y);
-  return FT(2) - t.y / (t.y - t.x);
+  return number<FT>(2) - t.y / (t.y - t.x);
 }
 
 // a vector of pseudo-angle p in [0, 2)
 template <class FT>
 Vec2<FT> vector_of_pseudo_angle(const FT& p)
 {
-  return p <= FT(1) ? Vec2<FT>{FT(1) - p, p} : Vec2<FT>{FT(1) - p, FT(2) - p};
+  return p <= FT(1) ? Vec2<FT>{number<FT>(1) - p, p} : Vec2<FT>{number<FT>(1) - p, number<FT>(2) - p};
 }
 
 // the rotation by a small angle s >= 0, as (cos s, sin s); exactly (1, 0) for s = 0. The cosine
@@ -50,23 +50,24 @@ template <class FT>
 Vec2<FT> small_turn(const FT& s)
 {
   if(!(s > FT(0)))
-    return Vec2<FT>{FT(1), FT(0)};
+    return Vec2<FT>{number<FT>(1), number<FT>(0)};
   const double a = CGAL::to_double(s);
-  return Vec2<FT>{FT(std::cos(a)), FT(std::sin(a))};
+  return Vec2<FT>{number<FT>(std::cos(a)), number<FT>(std::sin(a))};
 }
 
-// A sum of corner angles (each in (0, pi)), kept as the unit vector at the sum and the number of
-// half turns made: the sum is in [half_turns pi, (half_turns + 1) pi).
+// A sum of corner angles (each in (0, pi)), kept as a vector at the sum (the product of the
+// corners' vectors as complex numbers, of any positive length) and the number of half turns
+// made: the sum is in [half_turns pi, (half_turns + 1) pi).
 template <class FT>
 struct Angle_sum
 {
-  Vec2<FT> at{FT(1), FT(0)};
+  Vec2<FT> at{number<FT>(1), number<FT>(0)};
   int half_turns = 0;
 
   // angle in [0, pi) modulo 2 pi
   static bool upper(const Vec2<FT>& e) { return e.y > FT(0) || (e.y == FT(0) && e.x > FT(0)); }
 
-  // adds the angle of the unit vector `u` (in (0, pi)): a half turn is crossed when the side changes
+  // adds the angle of `u` (in (0, pi)): a half turn is crossed when the side changes
   void add(const Vec2<FT>& u)
   {
     const Vec2<FT> next{at.x * u.x - at.y * u.y, at.x * u.y + at.y * u.x};
@@ -104,16 +105,16 @@ template <class Mesh, class FT>
 FT direction_position(const Mesh& mesh, typename Mesh::Index corner, const Vec2<FT>& t)
 {
   if(!(t.y > FT(0)))
-    return FT(mesh.corner_rank(corner));
+    return number<FT>(mesh.corner_rank(corner));
   const Vec2<FT> a = mesh.apex(corner);
   if(!(cross(t, a) > FT(0)))
   {
     const typename Mesh::Index n = mesh.next_in_turn(corner);
     if(n != Mesh::no_halfedge)
-      return FT(mesh.corner_rank(n));
-    return FT(mesh.corner_rank(corner)) + pseudo_angle(a) / FT(2);
+      return number<FT>(mesh.corner_rank(n));
+    return number<FT>(mesh.corner_rank(corner)) + pseudo_angle(a) / number<FT>(2);
   }
-  return FT(mesh.corner_rank(corner)) + pseudo_angle(t) / FT(2);
+  return number<FT>(mesh.corner_rank(corner)) + pseudo_angle(t) / number<FT>(2);
 }
 
 // the direction at vertex `v` at a position that direction_position() gave
@@ -124,7 +125,7 @@ Corner_direction<FT, typename Mesh::Index> direction_at(const Mesh& mesh, typena
   Index rank = Index((std::max)(0., std::floor(CGAL::to_double(position))));
   while(rank > 0 && FT(rank) > position) // to_double() may round up to the next integer
     --rank;
-  return {mesh.corner_of_rank(v, rank), std::int64_t(rank), vector_of_pseudo_angle(FT(2) * (position - FT(rank)))};
+  return {mesh.corner_of_rank(v, rank), std::int64_t(rank), vector_of_pseudo_angle(number<FT>(2) * (position - number<FT>(rank)))};
 }
 
 // The turns of DGG-VTP's fans, the shadows of saddles and straight paths through vertices: by
@@ -139,15 +140,16 @@ bool turn_direction(const Mesh& mesh, Corner_direction<FT, typename Mesh::Index>
   using Index = typename Mesh::Index;
   using Point = Vec2<FT>;
   // Clockwise turns work in each corner's mirror image across its bisector, where the last edge
-  // is +x and the first edge at the unit vector along the last edge (Unfolded_mesh::unit_apex),
-  // so that one loop serves both ways.
+  // is +x and the first edge along the last edge's direction (Unfolded_mesh::last_edge_direction),
+  // so that one loop serves both ways. Only directions matter: an exact type's vectors, not unit,
+  // just scale.
   const auto mirror = [](const Point& t, const Point& u) { return Point{dot(t, u), cross(t, u)}; };
   // T, given as a vector in the current corner's (working) frame whose angle from +x in [0, 2 pi)
   // is the turn still to make, reached corner by corner
   const auto walk = [&](Point t) {
     for(;;)
     {
-      const Point u = mesh.unit_apex(d.corner);
+      const Point u = mesh.last_edge_direction(d.corner);
       if(t.y >= FT(0) && cross(t, u) >= FT(0))
         break;
       const Index n = counterclockwise ? mesh.next_in_turn(d.corner) : mesh.previous_in_turn(d.corner);
@@ -157,7 +159,7 @@ bool turn_direction(const Mesh& mesh, Corner_direction<FT, typename Mesh::Index>
       d.corner = n;
       d.rank += counterclockwise ? 1 : -1;
     }
-    d.vector = counterclockwise ? t : mirror(t, mesh.unit_apex(d.corner));
+    d.vector = counterclockwise ? t : mirror(t, mesh.last_edge_direction(d.corner));
     if(cross(d.vector, mesh.apex(d.corner)) == FT(0))
     {
       const Index n = mesh.next_in_turn(d.corner);
@@ -165,18 +167,18 @@ bool turn_direction(const Mesh& mesh, Corner_direction<FT, typename Mesh::Index>
       {
         d.corner = n;
         ++d.rank;
-        d.vector = Point{FT(1), FT(0)};
+        d.vector = Point{number<FT>(1), number<FT>(0)};
       }
     }
     return true;
   };
-  const Point t = counterclockwise ? d.vector : mirror(d.vector, mesh.unit_apex(d.corner));
+  const Point t = counterclockwise ? d.vector : mirror(d.vector, mesh.last_edge_direction(d.corner));
   if(!by_more_than_pi)
     return walk(Point{-(t.x * turn_s.x + t.y * turn_s.y), -(t.y * turn_s.x - t.x * turn_s.y)});
   // pi first and then s, so that the turn left to make stays below 2 pi
   if(!walk(Point{-t.x, -t.y}))
     return false;
-  const Point r = counterclockwise ? d.vector : mirror(d.vector, mesh.unit_apex(d.corner));
+  const Point r = counterclockwise ? d.vector : mirror(d.vector, mesh.last_edge_direction(d.corner));
   return walk(Point{r.x * turn_s.x - r.y * turn_s.y, r.x * turn_s.y + r.y * turn_s.x});
 }
 

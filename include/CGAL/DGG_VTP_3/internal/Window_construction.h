@@ -33,7 +33,7 @@ inline Window<FT> window_from_point(const Unfolded_mesh<FT>& mesh, typename Unfo
 {
   const FT len = mesh.length(e);
   Window<FT> w;
-  w.b0 = FT(0);
+  w.b0 = number<FT>(0);
   w.b1 = len;
   w.source = Vec2<FT>{len - p.x, -p.y}; // the same triangle seen from the other side
   w.sigma = sigma;
@@ -63,9 +63,9 @@ inline Window<FT> window_across_corner(const Unfolded_mesh<FT>& mesh, typename U
 template <class FT>
 inline bool left_child(const Window<FT>& w, const Vec2<FT>& c, FT x, FT end, FT len, Window<FT>& child)
 {
-  const Vec2<FT> a{FT(0), FT(0)};
-  const FT u0 = ray_segment_parameter(w.source, Vec2<FT>{w.b0, FT(0)}, a, c);
-  const FT u1 = x < end ? FT(1) : ray_segment_parameter(w.source, Vec2<FT>{end, FT(0)}, a, c);
+  const Vec2<FT> a{number<FT>(0), number<FT>(0)};
+  const FT u0 = ray_segment_parameter(w.source, Vec2<FT>{w.b0, number<FT>(0)}, a, c);
+  const FT u1 = x < end ? number<FT>(1) : ray_segment_parameter(w.source, Vec2<FT>{end, number<FT>(0)}, a, c);
   if(!(u0 < u1))
     return false;
   child = w;
@@ -80,8 +80,8 @@ inline bool left_child(const Window<FT>& w, const Vec2<FT>& c, FT x, FT end, FT 
 template <class FT>
 inline bool right_child(const Window<FT>& w, const Vec2<FT>& b, const Vec2<FT>& c, FT x, FT start, FT len, Window<FT>& child)
 {
-  const FT v0 = start < x ? FT(0) : ray_segment_parameter(w.source, Vec2<FT>{start, FT(0)}, c, b);
-  const FT v1 = ray_segment_parameter(w.source, Vec2<FT>{w.b1, FT(0)}, c, b);
+  const FT v0 = start < x ? number<FT>(0) : ray_segment_parameter(w.source, Vec2<FT>{start, number<FT>(0)}, c, b);
+  const FT v1 = ray_segment_parameter(w.source, Vec2<FT>{w.b1, number<FT>(0)}, c, b);
   if(!(v0 < v1))
     return false;
   child = w;

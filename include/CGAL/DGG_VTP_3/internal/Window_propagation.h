@@ -92,16 +92,16 @@ public:
     if(query.record_origins)
       m_origin.assign(nv, no_origin());
     if(query.record_arrivals)
-      m_arrival.assign(nv, Arrival{Mesh::no_halfedge, Point{FT(0), FT(0)}});
+      m_arrival.assign(nv, Arrival{Mesh::no_halfedge, Point{number<FT>(0), number<FT>(0)}});
     for(std::size_t k = 0; k < query.vertex_sources.size(); ++k)
     {
       const Index s = query.vertex_sources[k];
       m_is_source[s] = 1;
-      m_distance[s] = FT(0);
+      m_distance[s] = number<FT>(0);
       if(query.record_origins)
         m_origin[s] = (std::min)(m_origin[s], nv + query.source_numbers[k]);
-      m_scheduler.commit(s, FT(0));
-      m_patches[m_partition.owner(s)].queue.push(Queue_entry(FT(0), s));
+      m_scheduler.commit(s, number<FT>(0));
+      m_patches[m_partition.owner(s)].queue.push(Queue_entry(number<FT>(0), s));
     }
     m_targets = Point_targets<FT>(m_mesh, query.point_targets);
     const auto out_in_face = [this](Index f) { return Emission_out{*this, m_patches[m_partition.patch_of_face(f)]}; };
@@ -376,7 +376,7 @@ private:
     if(best.window != nullptr) // lines 21-24 for the apex
     {
       // arrival direction at c, in the frame of c's corner prev(h), which starts along c -> a
-      const Point to_a = Point{FT(0), FT(0)} - c;
+      const Point to_a = Point{number<FT>(0), number<FT>(0)} - c;
       const Point back = best.window->source - c;
       relax(p, apex_vertex, best.distance, Mesh::prev(h), Point{dot(to_a, back), cross(to_a, back)}, best.window->origin);
     }
@@ -385,7 +385,7 @@ private:
     // it as its new CH-relay vertex on that side (line 22)
     const Index left = m_mesh.opposite(Mesh::prev(h));
     const Index right = m_mesh.opposite(Mesh::next(h));
-    const Point b{len, FT(0)};
+    const Point b{len, number<FT>(0)};
     Win child;
     for(std::size_t i = 0; i < p.buffer.size(); ++i)
     {

@@ -59,7 +59,7 @@ inline bool trim_by_end_vertices(Window<FT>& w, FT len, FT da, FT db)
     if(w.distance_to_base_point(w.b1) > k + w.sigma + w.b1)
       return false;
     if(w.distance_to_base_point(w.b0) > k + w.sigma + w.b0)
-      shrink_to(w, (ss - k * k) / (FT(2) * (k + sx)), w.b0);
+      shrink_to(w, (ss - k * k) / (number<FT>(2) * (k + sx)), w.b0);
   }
   if(db < inf)
   {
@@ -68,7 +68,7 @@ inline bool trim_by_end_vertices(Window<FT>& w, FT len, FT da, FT db)
     if(w.distance_to_base_point(w.b0) > k + w.sigma - w.b0)
       return false;
     if(w.distance_to_base_point(w.b1) > k + w.sigma - w.b1)
-      shrink_to(w, (k * k - ss) / (FT(2) * (k - sx)), w.b1);
+      shrink_to(w, (k * k - ss) / (number<FT>(2) * (k - sx)), w.b1);
   }
   return w.b0 < w.b1;
 }
@@ -100,7 +100,7 @@ template <class FT>
 inline Best_toward_apex<FT> best_toward_apex(const std::vector<Window<FT>>& windows, const Vec2<FT>& c,
                                              std::vector<Toward_apex<FT>>& toward_apex)
 {
-  Best_toward_apex<FT> best{nullptr, Number_type_math<FT>::infinity(), FT(0)};
+  Best_toward_apex<FT> best{nullptr, Number_type_math<FT>::infinity(), number<FT>(0)};
   toward_apex.resize(windows.size());
   for(std::size_t i = 0; i < windows.size(); ++i)
   {
@@ -149,10 +149,10 @@ inline Sides<FT> sides_of_best_path(const Window<FT>& w, const Toward_apex<FT>& 
   if(!lights_apex)
   {
     const FT end = t.crossing < w.b0 ? w.b0 : w.b1;
-    to_c = w.distance_to_base_point(end) + length(c - Point{end, FT(0)});
+    to_c = w.distance_to_base_point(end) + length(c - Point{end, number<FT>(0)});
   }
   Sides<FT> keep{w.b1, w.b0};
-  if(to_c >= best.distance * (FT(1) + tolerance))
+  if(to_c >= best.distance * (number<FT>(1) + tolerance))
   {
     keep.left_end = (std::min)(best.crossing, w.b1);
     keep.right_start = (std::max)(best.crossing, w.b0);
@@ -165,7 +165,7 @@ inline Sides<FT> sides_of_best_path(const Window<FT>& w, const Toward_apex<FT>& 
       const Point& sB = best.window->source;
       const FT side = cross(Point{best.crossing - sB.x, -sB.y}, w.source - sB);
       const bool sB_nearer = sB.y > w.source.y;
-      const FT beyond_sB = sB_nearer ? x_axis_crossing(w.source, sB) : FT(0);
+      const FT beyond_sB = sB_nearer ? x_axis_crossing(w.source, sB) : number<FT>(0);
       if(side < FT(0))
         keep.left_end = sB_nearer ? (std::min)(best.crossing, beyond_sB) : -inf;
       else if(side > FT(0))
@@ -195,11 +195,11 @@ inline int equal_distance_points(const Window<FT>& u, const Window<FT>& w, FT lo
   const FT xu = u.source.x, yu = u.source.y, xw = w.source.x, yw = w.source.y;
   const FT delta = w.sigma - u.sigma;
   // r_u^2 - r_w^2 = A t + B, so A t + B - delta^2 = 2 delta r_w
-  const FT A = FT(2) * (xw - xu);
+  const FT A = number<FT>(2) * (xw - xu);
   const FT C = (xu * xu + yu * yu - xw * xw - yw * yw) - delta * delta;
-  const FT d2 = FT(4) * delta * delta;
+  const FT d2 = number<FT>(4) * delta * delta;
   const FT a = A * A - d2;
-  const FT b = FT(2) * A * C + d2 * FT(2) * xw;
+  const FT b = number<FT>(2) * A * C + d2 * number<FT>(2) * xw;
   const FT c = C * C - d2 * (xw * xw + yw * yw);
   int n = 0;
   auto keep = [&](FT t) { if(lo < t && t < hi) out[n++] = t; };
@@ -213,10 +213,10 @@ inline int equal_distance_points(const Window<FT>& u, const Window<FT>& w, FT lo
       keep(-c / b);
     return n;
   }
-  const FT disc = b * b - FT(4) * a * c;
+  const FT disc = b * b - number<FT>(4) * a * c;
   if(disc < FT(0))
     return 0;
-  const FT q = -(b + (b < FT(0) ? -Math::sqrt(disc) : Math::sqrt(disc))) / FT(2);
+  const FT q = -(b + (b < FT(0) ? -Math::sqrt(disc) : Math::sqrt(disc))) / number<FT>(2);
   keep(q / a);
   if(q != FT(0))
     keep(c / q);
@@ -304,7 +304,7 @@ CGAL_DGG_VTP_3_HOT_INLINE void trim_pair(Window<FT>& u, Window<FT>& w)
     pieces = n - 1;
     for(int k = 0; k < pieces; ++k)
     {
-      const FT at_middle = difference((cuts[k] + cuts[k + 1]) / FT(2));
+      const FT at_middle = difference((cuts[k] + cuts[k + 1]) / number<FT>(2));
       const FT fmin = (std::min)(at_cut[k], at_cut[k + 1]);
       const FT fmax = (std::max)(at_cut[k], at_cut[k + 1]);
       if(at_middle > m)

@@ -31,12 +31,12 @@ FT early_termination_limit(const Propagation_query<FT>& query, const Point_targe
   FT limit = query.max_distance;
   if(!query.vertex_targets.empty() || !point_targets.empty())
   {
-    FT targets = point_targets.empty() ? FT(0) : point_targets.largest();
+    FT targets = point_targets.empty() ? number<FT>(0) : point_targets.largest();
     for(std::uint32_t v : query.vertex_targets)
       targets = (std::max)(targets, distance[v]);
     limit = (std::min)(limit, targets);
   }
-  return limit < Number_type_math<FT>::infinity() ? limit + FT(2) * band : limit;
+  return limit < Number_type_math<FT>::infinity() ? limit + number<FT>(2) * band : limit;
 }
 
 } // namespace internal

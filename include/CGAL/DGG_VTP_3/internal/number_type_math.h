@@ -44,6 +44,8 @@ struct Number_type_math
   static FT machine_epsilon() { return std::numeric_limits<FT>::epsilon(); }
   static FT sqrt(FT x) { return std::sqrt(x); }
   static FT abs(FT x) { return std::abs(x); }
+  template <class T>
+  static FT convert(const T& x) { return FT(x); }
 };
 
 // An exact number type with square roots (CGAL's Algebraic_structure_traits: Is_exact, Sqrt): no
@@ -58,12 +60,16 @@ struct Number_type_math<FT, true>
   static FT machine_epsilon() { return FT(0); }
   static FT sqrt(const FT& x) { return CGAL::sqrt(x); }
   static FT abs(const FT& x) { return CGAL::abs(x); }
+  template <class T>
+  static FT convert(const T& x) { return FT(x); }
 };
 
 #ifdef CGAL_USE_MPFR
 // CGAL::Gmpfr through MPFR's own functions. As CGAL's Gmpfr arithmetic does, a result gets the
 // larger of its operands' precision and the default precision, and is rounded by the default
-// rounding mode.
+// rounding mode. The numbers the propagation starts from (coordinates, constants, the user's
+// parameters) are made by convert(), at the default precision, so that the whole computation is
+// at the precision the user set.
 template <>
 struct Number_type_math<Gmpfr>
 {
@@ -88,6 +94,10 @@ struct Number_type_math<Gmpfr>
 
   static Gmpfr sqrt(const Gmpfr& x) { return unary(mpfr_sqrt, x); }
   static Gmpfr abs(const Gmpfr& x) { return unary(mpfr_abs, x); }
+  // at the default precision: Gmpfr's own constructors from int and double take 256 and 512
+  // bits, and every result computed from such a number would carry them
+  template <class T>
+  static Gmpfr convert(const T& x) { return Gmpfr(x, Gmpfr::get_default_precision()); }
 
 private:
   static Gmpfr::Precision_type precision(const Gmpfr& x)
@@ -104,6 +114,15 @@ private:
   }
 };
 #endif // CGAL_USE_MPFR
+
+// `x` (a number of any type FT can be made from) as an FT at the working precision: how the
+// propagation makes every number that enters its arithmetic (constants included; comparing with
+// FT(0) makes no number). For all types but CGAL::Gmpfr that is FT(x).
+template <class FT, class T>
+FT number(const T& x)
+{
+  return Number_type_math<FT>::convert(x);
+}
 
 } // namespace internal
 } // namespace DGG_VTP_3

@@ -34,7 +34,7 @@ template <class FT>
 inline FT clamp01(FT t)
 {
   // also maps NaN to 0: a degenerate ray can never push a window off its edge
-  return t > FT(0) ? (t < FT(1) ? t : FT(1)) : FT(0);
+  return t > FT(0) ? (t < FT(1) ? t : number<FT>(1)) : number<FT>(0);
 }
 
 // Parameter in [0, 1] along segment [A, B] where the line through `s` and `p` crosses it.
@@ -46,7 +46,7 @@ inline FT ray_segment_parameter(const Vec2<FT>& s, const Vec2<FT>& p,
   const Vec2<FT> r = p - s;
   const FT den = cross(r, B - A);
   if(!(den != FT(0)))
-    return FT(0);
+    return number<FT>(0);
   return clamp01(cross(r, s - A) / den);
 }
 

@@ -34,9 +34,9 @@ namespace internal {
 template <class FT, class GeomTraits, class Point>
 void store_point(const GeomTraits& gt, const Point& p, std::size_t i, std::vector<FT>& xyz)
 {
-  xyz[3 * i] = gt.compute_x_3_object()(p);
-  xyz[3 * i + 1] = gt.compute_y_3_object()(p);
-  xyz[3 * i + 2] = gt.compute_z_3_object()(p);
+  xyz[3 * i] = number<FT>(gt.compute_x_3_object()(p));
+  xyz[3 * i + 1] = number<FT>(gt.compute_y_3_object()(p));
+  xyz[3 * i + 2] = number<FT>(gt.compute_z_3_object()(p));
   for(int c = 0; c < 3; ++c)
     if(!CGAL::is_finite(xyz[3 * i + c]))
       throw std::invalid_argument("vertex " + std::to_string(i) + " has a coordinate that is not finite");
