@@ -14,9 +14,10 @@
 // distinct square root in the compared numbers. The preparation keeps them few (one root per
 // distinct squared length or area, none for a perfect square; angle sums with the face areas as
 // their only roots), so meshes of few distinct lengths (integer grids, a subdivided regular
-// tetrahedron, a square prism) of a few dozen faces take 0.01-3 s per source. Generic coordinates
-// bring a root per edge: a 3 x 3 grid jittered 18 faces takes 20 s, a 4 x 4 one moved by a rigid
-// motion over 100 s (benchmark/DGG_VTP_3/README.md, "Exact kernel"); those tests stay small.
+// tetrahedron, a square prism) of a few dozen faces take 0.01-8 s per source. Generic coordinates
+// bring a root per edge: a jittered 3 x 3 grid of 18 faces takes 20 s to minutes, a 4 x 4 one moved
+// by a rigid motion over 100 s (benchmark/DGG_VTP_3/README.md, "Exact kernel"); those tests stay
+// small (6 and 8 faces).
 
 #include "test_utilities.h"
 
