@@ -328,8 +328,9 @@ public:
     auto it = m_roots.find(x);
     if(it == m_roots.end())
     {
-      const FT nearest(CGAL::to_double(Number_type_math<FT>::sqrt(x)));
-      it = m_roots.emplace(x, nearest * nearest == x ? nearest : Number_type_math<FT>::sqrt(x)).first;
+      const FT r = Number_type_math<FT>::sqrt(x);
+      const FT nearest(CGAL::to_double(r));
+      it = m_roots.emplace(x, nearest * nearest == x ? nearest : r).first;
     }
     return it->second;
   }
