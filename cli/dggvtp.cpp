@@ -69,7 +69,7 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
   --max-distance D       stop the propagation at distance D >= 0 (inf allowed): vertices, targets
                          and paths farther away are unreached (inf)
   --exact                exact distances (VTP algorithm); the default
-  --epsilon E            DGG-VTP with accuracy E >= 0: every distance within a relative error E
+  --epsilon E            DGG-VTP with accuracy E in [0, 1]: every distance within a relative error E
                          of the exact one (E = 0 is --exact)
   --precision P          double (default) or float
   --threads T            number of threads, 0 = all cores (default 1); the distances are the

@@ -87,7 +87,7 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
                          when every row is in it
   --dtype D              float64 (default) or float32: the element type of the .npy
   --exact                exact distances (VTP algorithm); the default
-  --epsilon E            DGG-VTP with accuracy E >= 0 (E = 0 is --exact)
+  --epsilon E            DGG-VTP with accuracy E in [0, 1] (E = 0 is --exact)
   --precision P          double (default) or float: the number type of the computation
   --threads T            threads per process, 0 = all cores (default 1): the sources are shared
                          among them (fps:K: each propagation runs on them); same bytes for any T

@@ -162,14 +162,16 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(invalid_accuracy, Config, All_configurations)
   auto map = get(CGAL::dynamic_vertex_property_t<typename Config::Kernel::FT>(), mesh);
   const auto v = *vertices(mesh).begin();
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
-  for(double accuracy : {-1e-3, -inf, nan, inf})
+  // above maximal_accuracy (1) the fans wrapped around and lost vertices (issue 31: spot at 10)
+  for(double accuracy : {-1e-3, -inf, nan, inf, 1.0000001, 4.5, 10., 50.})
   {
     BOOST_CHECK_THROW(solver.compute_distances(v, map, CGAL::parameters::accuracy(accuracy)), std::invalid_argument);
     BOOST_CHECK_THROW(CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, map, v, CGAL::parameters::accuracy(accuracy)),
                       std::invalid_argument);
   }
-  // 0 is the exact algorithm, the default
+  // 0 is the exact algorithm, the default; 1 the largest accuracy supported
   BOOST_CHECK_NO_THROW(solver.compute_distances(v, map, CGAL::parameters::accuracy(0.)));
+  BOOST_CHECK_NO_THROW(solver.compute_distances(v, map, CGAL::parameters::accuracy(CGAL::DGG_VTP_3::maximal_accuracy)));
 }
 
 // faces and vertices are numbered in 32 bits (3 per face for the halfedges): a mesh beyond that

@@ -13,7 +13,8 @@ using namespace dggvtp_test;
 
 namespace {
 
-const double epsilons[] = {1e-4, 1e-5, 1e-6, 1e-7};
+// the whole supported range: its largest value, the coarse ones users pick for speed, the fine ones
+const double epsilons[] = {CGAL::DGG_VTP_3::maximal_accuracy, 0.5, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
 
 struct Contract_report
 {

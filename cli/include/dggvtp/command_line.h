@@ -9,6 +9,8 @@
 // What dggvtp and dggvtp-batch share of their command lines: the options of the propagation
 // (--exact, --epsilon, --precision), number parsing, and the pieces of their --stats files.
 
+#include <CGAL/DGG_VTP_3/parameters.h>
+
 #include <sys/resource.h>
 
 #include <cctype>
@@ -61,8 +63,9 @@ struct Propagation_options
     else if(arg == "--epsilon")
     {
       epsilon = parse_number<double>(arg, value());
-      if(!(epsilon >= 0.) || !std::isfinite(epsilon))
-        throw Usage_error("--epsilon must be a finite number >= 0");
+      if(!(epsilon >= 0. && epsilon <= CGAL::DGG_VTP_3::maximal_accuracy))
+        throw Usage_error("--epsilon must be in [0, 1] (0: exact): a relative error above 1 is not an "
+                          "approximation of a distance, and the library refuses it");
       epsilon_given = true;
     }
     else if(arg == "--precision")

@@ -195,7 +195,7 @@ public:
    *   \cgalParamNBegin{accuracy}
    *     \cgalParamDescription{the accuracy epsilon of DGG-VTP: every distance is within a relative
    *                           error epsilon of the exact one; 0 is the exact algorithm (VTP)}
-   *     \cgalParamType{`double`, finite and >= 0}
+   *     \cgalParamType{`double`, in [0, `CGAL::DGG_VTP_3::maximal_accuracy`] = [0, 1]}
    *     \cgalParamDefault{`0`}
    *   \cgalParamNEnd
    *   \cgalParamNBegin{DGG_VTP_3::parameters::max_distance}
@@ -229,7 +229,7 @@ public:
    * \returns what the propagation did
    * \throws std::invalid_argument if `source` is not a vertex or a point of the mesh (the face
    *         of another mesh, barycentric coordinates that are not finite, negative beyond rounding
-   *         or do not add up to 1), the accuracy is negative or not finite, or the maximum
+   *         or do not add up to 1), the accuracy is not in [0, 1], or the maximum
    *         distance is negative or NaN; the same for the targets.
    */
   template <class ConcurrencyTag = Sequential_tag, class Source, class VertexDistanceMap,
@@ -282,8 +282,7 @@ public:
    * \param np the named parameters of `compute_distances()`
    * \returns what each propagation did, in the order of `sources`
    * \throws std::invalid_argument before any propagation if an element of `sources` is not a
-   *         vertex of the mesh, if the two ranges differ in size, or if the accuracy is negative or
-   *         not finite. No source: nothing is done.
+   *         vertex of the mesh, if the two ranges differ in size, or if the accuracy is not in [0, 1]. No source: nothing is done.
    */
   template <class ConcurrencyTag = Sequential_tag, class VertexRange, class VertexDistanceMapRange,
             class NamedParameters = parameters::Default_named_parameters>
@@ -385,8 +384,8 @@ private:
   static Computation_FT checked_accuracy(const NamedParameters& np)
   {
     const double accuracy = parameters::choose_parameter(parameters::get_parameter(np, internal_np::accuracy), 0.);
-    if(!(accuracy >= 0.) || !std::isfinite(accuracy))
-      throw std::invalid_argument("the accuracy must be a finite number >= 0");
+    if(!(accuracy >= 0. && accuracy <= maximal_accuracy))
+      throw std::invalid_argument("the accuracy must be a number in [0, 1] (0: exact); got " + std::to_string(accuracy));
     return internal::number<Computation_FT>(accuracy);
   }
 

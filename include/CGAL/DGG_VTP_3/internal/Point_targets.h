@@ -103,12 +103,25 @@ public:
     }
   }
 
-  // the largest of the targets' distances found so far (+inf while one is unreached)
-  FT largest() const
+  // the largest of the targets' distances found so far, by the windows seen and by the corners'
+  // distances `vertex_distance` (+inf while one is unreached)
+  FT largest_bound(const Mesh& mesh, const std::vector<FT>& vertex_distance) const
   {
+    std::vector<FT> bound(m_count, infinity());
+    for(std::size_t i = 0; i < m_entries.size(); ++i)
+    {
+      const Entry& e = m_entries[i];
+      FT& b = bound[e.target];
+      b = (std::min)(b, e.best);
+      const Index f = m_faces[i];
+      const Point corner[3] = {Point{number<FT>(0), number<FT>(0)}, Point{mesh.length(3 * f), number<FT>(0)}, mesh.apex(3 * f)};
+      const Point q = position(e.barycentric, corner);
+      for(int k = 0; k < 3; ++k)
+        b = (std::min)(b, vertex_distance[mesh.source(3 * f + k)] + length(q - corner[k]));
+    }
     FT largest(0);
-    for(const FT& d : distances())
-      largest = (std::max)(largest, d);
+    for(const FT& b : bound)
+      largest = (std::max)(largest, b);
     return largest;
   }
 

@@ -39,7 +39,8 @@ namespace internal {
 //   void receive(p, message)        for each kind of message below
 //   bool schedule_stranded_lists(active)
 //   const std::vector<FT>& distances()
-//   FT stop_limit()                 no vertex beyond this needs to be popped (+inf: all of them)
+//   bool query_is_answered(nearest) every distance the query needs is final, `nearest` being
+//                                   the nearest queued vertex of all patches
 template <class FT>
 class Round_scheduler
 {
@@ -110,17 +111,17 @@ public:
     {
       FT nearest = Number_type_math<FT>::infinity();
       active.clear();
-      const FT stop = propagation.stop_limit();
       for(Index p = 0; p < m_partition.size(); ++p)
       {
         const FT queued = propagation.nearest_queued(p);
         nearest = (std::min)(nearest, queued);
-        if(propagation.has_lists_to_propagate(p) || (queued < Number_type_math<FT>::infinity() && queued <= stop))
+        if(propagation.has_lists_to_propagate(p) || queued < Number_type_math<FT>::infinity())
           active.push_back(p);
       }
-      if(active.empty() && (stop < Number_type_math<FT>::infinity() || !propagation.schedule_stranded_lists(active)))
+      // early termination ends the rounds of the full propagation, it does not change them
+      if(propagation.query_is_answered(nearest) || (active.empty() && !propagation.schedule_stranded_lists(active)))
         break;
-      const FT limit = (std::min)(nearest + m_partition.band(), stop);
+      const FT limit = nearest + m_partition.band();
       CGAL::for_each<ConcurrencyTag>(active, [&](Index p) { propagation.run_round(p, limit); return true; });
       // an upper bound of the windows alive at once during the round
       std::size_t peak = 0;

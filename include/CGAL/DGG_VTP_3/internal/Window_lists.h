@@ -78,6 +78,17 @@ public:
     }
   }
 
+  // whether `predicate` holds for every window in the lists
+  template <class Predicate>
+  bool all_windows(const Predicate& predicate) const
+  {
+    for(Index head : m_head)
+      for(Index i = head; i != nil; i = next(i))
+        if(!predicate(window(i)))
+          return false;
+    return true;
+  }
+
   std::size_t created() const { return m_created; }
   std::size_t peak() const { return m_peak; }
   // the peak from now on
@@ -100,7 +111,9 @@ private:
   static constexpr int block_bits = 10;
   static constexpr Index block_mask = (Index(1) << block_bits) - 1;
   Window<FT>& window(Index i) { return m_window_blocks[i >> block_bits][i & block_mask]; }
+  const Window<FT>& window(Index i) const { return m_window_blocks[i >> block_bits][i & block_mask]; }
   Index& next(Index i) { return m_next_blocks[i >> block_bits][i & block_mask]; }
+  Index next(Index i) const { return m_next_blocks[i >> block_bits][i & block_mask]; }
 
   std::vector<Index> m_head;      // per halfedge: first window of its list, or nil
   std::vector<std::unique_ptr<Window<FT>[]>> m_window_blocks; // the pool: windows, live or free

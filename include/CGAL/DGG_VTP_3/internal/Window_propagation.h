@@ -180,8 +180,12 @@ private:
 
   bool has_lists_to_propagate(Index k) const { return !m_patches[k].fifo.empty(); }
 
-  // no vertex farther than this needs to be popped (+inf: all of them)
-  FT stop_limit() const { return early_termination_limit(*m_query, m_targets, m_distance, m_partition.band()); }
+  // whether every distance the query needs is final (see early_termination.h); `nearest`: the
+  // nearest queued vertex of all patches
+  bool query_is_answered(FT nearest) const
+  {
+    return nothing_pending_below(early_termination_limit(*m_query, m_targets, m_mesh, m_distance), nearest, m_patches);
+  }
 
   // lines 9-29 in one patch, for the vertices nearer than `limit`
   void run_round(Index k, FT limit)

@@ -8,6 +8,9 @@
 
 #include <CGAL/DGG_VTP_3/internal/Point_targets.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
+#include <CGAL/DGG_VTP_3/internal/Tuning.h>
+#include <CGAL/DGG_VTP_3/internal/Window_lists.h>
+#include <CGAL/DGG_VTP_3/internal/Distance_bound.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 
 #include <algorithm>
@@ -18,25 +21,60 @@ namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
 
-// Early termination: the vertices nearer than the query's largest distance of interest (its
-// maximum distance, or the largest distance of its targets found so far, +inf while one is
-// unreached) are final once no vertex within a few mean edge lengths beyond it is left to pop
-// (`band`, a round's width: twice that absorbs what windows crossing the last faces still
-// bring). Returns how far vertices still need to be popped (+inf: all of them). `distance`: the
-// vertices' distances found so far.
+// Early termination (targets, max_distance), from the propagation's own invariant.
+//
+// Everything the propagation will still do starts from its pending work: a vertex in a queue
+// (key k: it emits windows and relaxes its neighbours at k or more) or a window in a list (every
+// value it or its descendants give, at the apex of a face or along the children's intervals, is
+// sigma + |p - source| for a point p beyond its interval, so at least its lower bound
+// sigma + distance_to_interval; a relaxation at the apex and a child window are no exception).
+// Nothing else makes distances: a value can only come from a chain of such steps, and each step
+// is at least its parent's lower bound. So, between two rounds (when no message is in flight), with
+//   P = the smallest key of the queues and lower bound of the windows in the lists,
+// no distance smaller than P will ever be set again. A vertex (or point target) whose distance
+// D <= L satisfies D < P - rounding is final: later values are all >= P. The largest distance of
+// interest L is the maximum distance, or the largest distance of the targets found so far
+// (+inf while one is unreached), whichever is smaller.
+//
+// The rounds are those of the full propagation (the stop only decides when they end), so the
+// distances of interest are the full field's bit for bit, whatever the mesh's edge lengths: a
+// margin of mean edge lengths, which this replaces, had nothing to do with how far a window
+// waiting on a long edge may still reach. The lists are only scanned once every queued vertex is
+// beyond L, which is near the end of an early-terminated propagation.
+
+// L: the largest distance the query needs to be final (+inf: every vertex). A point target's
+// distance is bounded by the windows seen crossing its face and by its corners' distances.
 template <class FT>
 FT early_termination_limit(const Propagation_query<FT>& query, const Point_targets<FT>& point_targets,
-                           const std::vector<FT>& distance, FT band)
+                           const Unfolded_mesh<FT>& mesh, const std::vector<FT>& distance)
 {
   FT limit = query.max_distance;
   if(!query.vertex_targets.empty() || !point_targets.empty())
   {
-    FT targets = point_targets.empty() ? number<FT>(0) : point_targets.largest();
+    FT targets = point_targets.empty() ? number<FT>(0) : point_targets.largest_bound(mesh, distance);
     for(std::uint32_t v : query.vertex_targets)
       targets = (std::max)(targets, distance[v]);
     limit = (std::min)(limit, targets);
   }
-  return limit < Number_type_math<FT>::infinity() ? limit + number<FT>(2) * band : limit;
+  return limit;
+}
+
+// Whether nothing pending can go below `limit` (beyond rounding), given the nearest queued key of
+// all patches and each patch's window lists.
+template <class FT, class Patches>
+bool nothing_pending_below(FT limit, FT nearest_queued, const Patches& patches)
+{
+  if(!(limit < Number_type_math<FT>::infinity()))
+    return false;
+  const FT above = limit + Tuning<FT>::rounding_margin(limit);
+  if(!(nearest_queued > above))
+    return false;
+  for(const auto& p : patches)
+    if(!p.lists.all_windows([&](const Window<FT>& w) {
+         return w.sigma + distance_to_interval(w.source, w.b0, w.b1) > above;
+       }))
+      return false;
+  return true;
 }
 
 } // namespace internal
