@@ -6,7 +6,8 @@ largest and smallest angle sum, vertex n/2, then evenly spaced ones), the exact 
 each epsilon of the sweep; every run is a process of its own. Per mesh and epsilon, over all sources:
   - accuracy against the exact mode: max and mean of the relative error / epsilon, the fraction of
     vertices within epsilon, and the lowest relative error (below 0 means shorter than exact: DGG-VTP
-    distances are lengths of real paths, so only rounding may go there);
+    distances are lengths of real paths, so only rounding may go there), and whether the contract holds:
+    every vertex within epsilon and none below the exact distance by more than 1e-12 relative;
   - time: `seconds_propagate`, median over --repeat runs for the first source (the other sources are
     run once, for accuracy), the ratio exact / DGG-VTP of the same run;
   - windows created, peak live windows, peak RSS of the whole process.
@@ -85,9 +86,9 @@ def main():
             sys.exit(f'error: {exe} is not an executable (build the targets dggvtp and mesh_baseline)')
     tmp = tempfile.mkdtemp(prefix='dgg_sweep.')
     header = ['| mesh | vertices | epsilon | sources | max err/eps | mean err/eps | within eps | lowest rel. err '
-              '| time (s) | exact (s) | exact/DGG | Dijkstra (s) | DGG/Dijkstra | windows created | peak windows '
-              '| peak RSS (MB) |',
-              '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|']
+              '| contract | time (s) | exact (s) | exact/DGG | Dijkstra (s) | DGG/Dijkstra | windows created '
+              '| peak windows | peak RSS (MB) |',
+              '|---|---:|---:|---:|---:|---:|---:|---:|:---:|---:|---:|---:|---:|---:|---:|---:|---:|']
     print('\n'.join(header), flush=True)
     rows, raw = [], []
     for mesh in a.meshes:
@@ -131,21 +132,25 @@ def main():
             acc = per_eps[e]
             t, te = statistics.median(acc['times']), statistics.median(acc['exact_times'])
             st = acc['stats']
+            contract = acc['errors_max'] <= e and acc['lowest'] >= -1e-12
             row = (f"| {name} | {n} | {e:g} | {len(sources)} | {acc['errors_max'] / e:.3f} "
                    f"| {acc['sum'] / max(1, acc['count']) / e:.3f} | {acc['within'] / max(1, acc['count']):.4f} "
-                   f"| {acc['lowest']:.1e} | {t:.3f} | {te:.3f} | {te / t:.2f} | {dijkstra:.4f} | {t / dijkstra:.1f} "
+                   f"| {acc['lowest']:.1e} | {'yes' if contract else 'NO'} | {t:.3f} | {te:.3f} | {te / t:.2f} "
+                   f"| {dijkstra:.4f} | {t / dijkstra:.1f} "
                    f"| {st['windows_created']} | {st['windows_peak']} | {st['peak_rss_mb']:.0f} |")
             rows.append(row)
             print(row, flush=True)
             raw.append({'mesh': mesh, 'vertices': n, 'epsilon': e, 'summary': True,
                         'max_over_eps': acc['errors_max'] / e, 'mean_over_eps': acc['sum'] / max(1, acc['count']) / e,
-                        'within': acc['within'] / max(1, acc['count']), 'seconds': t, 'exact_seconds': te,
+                        'within': acc['within'] / max(1, acc['count']), 'contract': contract,
+                        'seconds': t, 'exact_seconds': te,
                         'exact_peak_rss_mb': acc['exact_stats']['peak_rss_mb'],
                         'exact_windows_peak': acc['exact_stats']['windows_peak'],
                         'dijkstra_seconds': dijkstra, 'stats': st})
         te = statistics.median(per_eps[a.epsilons[0]]['exact_times'])
         est = per_eps[a.epsilons[0]]['exact_stats']
-        row = (f"| {name} | {n} | exact | {len(sources)} | 0 | 0 | 1 | 0 | {te:.3f} | {te:.3f} | 1.00 | {dijkstra:.4f} "
+        row = (f"| {name} | {n} | exact | {len(sources)} | 0 | 0 | 1 | 0 | yes | {te:.3f} | {te:.3f} | 1.00 "
+               f"| {dijkstra:.4f} "
                f"| {te / dijkstra:.1f} | {est['windows_created']} | {est['windows_peak']} | {est['peak_rss_mb']:.0f} |")
         rows.append(row)
         print(row, flush=True)
