@@ -91,8 +91,10 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
 Targets and paths stop the propagation before the other vertices are final, so --target and
 --path-to do not combine with --output and --labels (ask for those in another run). Distances
 and paths are printed with %.17g, or inf for unreached ones. A point is taken at the nearest
-point of the surface (CGAL::Polygon_mesh_processing::locate), so it may lie off the surface. Only
-one output may go to standard output; the summary then goes to standard error.
+point of the surface (CGAL::Polygon_mesh_processing::locate), so it may lie off the surface; one
+farther from it than 1e-6 times the diagonal of the mesh's bounding box gets a 'warning:' line
+on stderr giving the distance it was moved. Only one output may go to standard output; the
+summary then goes to standard error.
 
 Input policy: polygons are triangulated and inconsistent orientations are fixed, splitting
 vertices where needed; a vertex where separate fans of faces meet is kept, and paths may pass
@@ -105,9 +107,16 @@ length edge or zero area), a sliver (an edge more than 1e10 times longer than th
 an edge shorter than 1e-3 machine epsilons times the mesh's size (2.2e-19 of it in double),
 the tip of a cone sharper than 1e-4 radians (windows would wrap around those for hours), a polygon that cannot be triangulated (it touches or crosses itself)
 or an out-of-range vertex is an error: one line on stderr starting with 'error:', exit status 2,
-and no output file; so are a negative or NaN --max-distance, a point coordinate that is not
-finite, OFF files with texture coordinates (STOFF), binary OFF with colours, and skeletons
-(SKEL), which CGAL's reader cannot read safely. Bad usage: exit status 1.
+and no output file; so are OFF files with texture coordinates (STOFF), binary OFF with colours,
+and skeletons (SKEL), which CGAL's reader cannot read safely.
+
+Exit status, by the kind of mistake: 0 success; 1 bad usage, a command line wrong whatever the
+mesh: an unknown option, a missing value, a value that is not a number, a negative or NaN value
+where a number >= 0 is needed, a coordinate that is not finite, a negative index, options that
+contradict each other; 2 bad input, a command line that this mesh or these files make wrong: an
+index out of range, a mesh that cannot be read or that the input policy refuses, an output that
+cannot be written (checked before the mesh is loaded). Either way one line on stderr starting
+with 'error:'.
 )";
 
 using dggvtp::json_string;

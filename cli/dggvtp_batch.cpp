@@ -106,8 +106,18 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
   --quiet                no summary, no warnings, no progress
   --help                 this text
 
-Exit status: 0 success, 1 bad usage, 2 bad input (unreadable mesh, bad source list, checkpoint
-of another command, write error), with one line on stderr starting with 'error:'.
+Before the mesh is loaded, every output (--output, --checkpoint, --sources-output, --stats) is
+checked to be writable; before the first row, the file's size (rows x vertices x 4 or 8 bytes,
+and a header) is checked against the free space of the file systems of the checkpoint and of
+the output.
+
+Exit status, by the kind of mistake (as for dggvtp): 0 success; 1 bad usage, a command line
+wrong whatever the mesh: an unknown option, a missing value, a value that is not a number, a
+negative or NaN one, fps:0, options that contradict each other; 2 bad input, a command line
+that this mesh or these files make wrong: fps:K beyond the vertices, a mesh or source list that
+cannot be read or is refused, an output or checkpoint that cannot be written, a checkpoint of
+another command, an output larger than the free space. Either way one line on stderr starting
+with 'error:'.
 )";
 
 using dggvtp::json_string;
