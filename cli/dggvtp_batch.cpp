@@ -9,9 +9,11 @@
 // `dggvtp-batch --help`.
 //
 // How a run goes (every rank, unless said otherwise):
-//  1. parse the options, load the mesh, read the sources, build the solver (as dggvtp does);
-//  2. rank 0 opens the checkpoint directory (creating it, or checking that it was made by the
-//     same command and reading which rows are done) and tells the other ranks the done rows;
+//  1. parse the options, check that the outputs can be written, load the mesh, read the sources,
+//     build the solver (as dggvtp does);
+//  2. rank 0 checks the free space for the output, opens the checkpoint directory (creating it,
+//     or checking that it was made by the same command and reading which rows are done) and
+//     tells the other ranks the done rows;
 //  3. each rank computes its share of the missing rows (row i of the missing ones goes to rank
 //     i mod R), spread over its threads; each row is written at its offset in the checkpoint's
 //     copy of the output (MPI-IO under MPI), made durable, and only then recorded as done;
@@ -516,7 +518,7 @@ struct Resume
 // Rank 0, before the checkpoint is made: the file systems of the checkpoint and of the output have
 // room for the rows still to write. The checkpoint's copy is a sparse file, which takes its space
 // only as the rows come: without this check a disk would fill up hours into the run.
-void check_room(const Options& options, const Checkpoint& checkpoint, std::size_t rows, std::size_t columns,
+void check_room_for_output(const Options& options, const Checkpoint& checkpoint, std::size_t rows, std::size_t columns,
                 std::uint64_t file_size)
 {
   struct stat info;
@@ -1010,7 +1012,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     if(!root)
       return;
     const std::string fingerprint = fingerprint_of(options, sources, one.file_vertices);
-    check_room(options, checkpoint, sources.rows, one.file_vertices, file_size);
+    check_room_for_output(options, checkpoint, sources.rows, one.file_vertices, file_size);
     in_checkpoint(options, [&] {
       resume = open_checkpoint(checkpoint, fingerprint, header, file_size, sources, one.file_vertices);
     });
