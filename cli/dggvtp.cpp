@@ -111,9 +111,9 @@ and no output file; so are OFF files with texture coordinates (STOFF), binary OF
 and skeletons (SKEL), which CGAL's reader cannot read safely.
 
 Exit status, by the kind of mistake: 0 success; 1 bad usage, a command line wrong whatever the
-mesh: an unknown option, a missing value, a value that is not a number, a negative or NaN value
-where a number >= 0 is needed, a coordinate that is not finite, a negative index, options that
-contradict each other; 2 bad input, a command line that this mesh or these files make wrong: an
+mesh: an unknown option, a missing value, a value that is not a number, a value out of its
+range (a negative or NaN --max-distance, an --epsilon outside [0, 1]), a coordinate that is not
+finite, a negative index, options that contradict each other; 2 bad input, a command line that this mesh or these files make wrong: an
 index out of range, a mesh that cannot be read or that the input policy refuses, an output that
 cannot be written (checked before the mesh is loaded). Either way one line on stderr starting
 with 'error:'.

@@ -115,7 +115,7 @@ the output.
 
 Exit status, by the kind of mistake (as for dggvtp): 0 success; 1 bad usage, a command line
 wrong whatever the mesh: an unknown option, a missing value, a value that is not a number, a
-negative or NaN one, fps:0, options that contradict each other; 2 bad input, a command line
+value out of its range (an --epsilon outside [0, 1], fps:0), options that contradict each other; 2 bad input, a command line
 that this mesh or these files make wrong: fps:K beyond the vertices, a mesh or source list that
 cannot be read or is refused, an output or checkpoint that cannot be written, a checkpoint of
 another command, an output larger than the free space. Either way one line on stderr starting

@@ -305,6 +305,7 @@ exit_code_table)
 1 MESH --sources s.txt --output o.npy --exact --epsilon 1e-3
 0 MESH --sources s.txt --output o.npy --epsilon 1e-3
 1 MESH --sources s.txt --output o.npy --epsilon -1
+1 MESH --sources s.txt --output o.npy --epsilon 2
 1 MESH --sources s.txt --output o.npy --epsilon nan
 1 MESH --sources s.txt --output o.npy --epsilon inf
 1 MESH --sources s.txt --output o.npy --epsilon abc

@@ -828,6 +828,7 @@ PY
 1 MESH --exact --epsilon 1e-3
 0 MESH --epsilon 1e-3
 1 MESH --epsilon -1
+1 MESH --epsilon 2
 1 MESH --epsilon nan
 1 MESH --epsilon inf
 1 MESH --epsilon abc
