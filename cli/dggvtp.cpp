@@ -10,6 +10,7 @@
 #include <dggvtp/command_line.h>
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/npy.h>
+#include <dggvtp/output_paths.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -90,8 +91,10 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
 Targets and paths stop the propagation before the other vertices are final, so --target and
 --path-to do not combine with --output and --labels (ask for those in another run). Distances
 and paths are printed with %.17g, or inf for unreached ones. A point is taken at the nearest
-point of the surface (CGAL::Polygon_mesh_processing::locate), so it may lie off the surface. Only
-one output may go to standard output; the summary then goes to standard error.
+point of the surface (CGAL::Polygon_mesh_processing::locate), so it may lie off the surface; one
+farther from it than 1e-6 times the diagonal of the mesh's bounding box gets a 'warning:' line
+on stderr giving the distance it was moved. Only one output may go to standard output; the
+summary then goes to standard error.
 
 Input policy: polygons are triangulated and inconsistent orientations are fixed, splitting
 vertices where needed; a vertex where separate fans of faces meet is kept, and paths may pass
@@ -104,9 +107,16 @@ length edge or zero area), a sliver (an edge more than 1e10 times longer than th
 an edge shorter than 1e-3 machine epsilons times the mesh's size (2.2e-19 of it in double),
 the tip of a cone sharper than 1e-4 radians (windows would wrap around those for hours), a polygon that cannot be triangulated (it touches or crosses itself)
 or an out-of-range vertex is an error: one line on stderr starting with 'error:', exit status 2,
-and no output file; so are a negative or NaN --max-distance, a point coordinate that is not
-finite, OFF files with texture coordinates (STOFF), binary OFF with colours, and skeletons
-(SKEL), which CGAL's reader cannot read safely. Bad usage: exit status 1.
+and no output file; so are OFF files with texture coordinates (STOFF), binary OFF with colours,
+and skeletons (SKEL), which CGAL's reader cannot read safely.
+
+Exit status, by the kind of mistake: 0 success; 1 bad usage, a command line wrong whatever the
+mesh: an unknown option, a missing value, a value that is not a number, a value out of its
+range (a negative or NaN --max-distance, an --epsilon outside [0, 1]), a coordinate that is not
+finite, a negative index, options that contradict each other; 2 bad input, a command line that this mesh or these files make wrong: an
+index out of range, a mesh that cannot be read or that the input policy refuses, an output that
+cannot be written (checked before the mesh is loaded). Either way one line on stderr starting
+with 'error:'.
 )";
 
 using dggvtp::json_string;
@@ -183,7 +193,7 @@ Options parse_options(int argc, char** argv)
       {
         c = parse_number<double>(arg, value());
         if(!std::isfinite(c))
-          throw dggvtp::Input_error(arg + " needs finite coordinates");
+          throw Usage_error(arg + " needs finite coordinates");
       }
       places_of(arg.substr(0, arg.size() - std::strlen("-point"))).push_back(place);
     }
@@ -191,7 +201,7 @@ Options parse_options(int argc, char** argv)
     {
       options.max_distance = parse_number<double>(arg, value());
       if(!(options.max_distance >= 0.))
-        throw dggvtp::Input_error("--max-distance must be a number >= 0 (inf allowed)");
+        throw Usage_error("--max-distance must be a number >= 0 (inf allowed)");
     }
     else if(arg == "--output-format")
     {
@@ -331,10 +341,27 @@ struct Run
   std::vector<double> target_distances; // per --target
   std::vector<double> path_lengths;     // per --path-to
   std::vector<Polyline> paths;          // per --path-to: from the target to the source; empty if unreached
+  std::vector<std::string> warnings;    // for standard error, unless --quiet
 };
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// "%.17g\n" as printf writes it (and "inf\n"), with std::to_chars: printf per line took most of
+// the writing time. At most 25 characters ("-1.2345678901234567e-308\n").
+char* put_distance_line(double d, char* out)
+{
+  out = std::to_chars(out, out + 24, d, std::chars_format::general, 17).ptr;
+  *out++ = '\n';
+  return out;
+}
+
+// a number as the distances are written (%.17g, inf)
+std::string number_text(double d)
+{
+  char line[32];
+  return std::string(line, put_distance_line(d, line) - 1);
+}
 
 // The nearest surface points to 3D points, by CGAL::Polygon_mesh_processing::locate_with_AABB_tree()
 // on a Surface_mesh of the solver's triangles (its face f is triangle f, its vertex i point i),
@@ -379,6 +406,28 @@ public:
     return {f, barycentric};
   }
 
+  // how far the point at `location` (as locate() gives it) is from `p`
+  double distance(const std::array<double, 3>& p, const std::pair<std::size_t, std::array<double, 3>>& location) const
+  {
+    double squared = 0.;
+    for(int c = 0; c < 3; ++c)
+    {
+      double x = 0.;
+      for(int j = 0; j < 3; ++j)
+        x += location.second[j] * m_points[m_triangles[location.first][j]][c];
+      squared += CGAL::square(x - p[c]);
+    }
+    return std::sqrt(squared);
+  }
+
+  // the length of the diagonal of the mesh's bounding box
+  double diagonal() const
+  {
+    const CGAL::Bbox_3 box = m_tree.bbox();
+    return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                     CGAL::square(box.zmax() - box.zmin()));
+  }
+
 private:
   const std::vector<Point_3>& m_points;
   const std::vector<Triangle>& m_triangles;
@@ -407,6 +456,7 @@ struct Query_places
   std::vector<std::pair<std::size_t, std::size_t>> isolated_sources;
   std::vector<Element> targets;           // the query's: those of --target, then of --path-to
   std::vector<Target> target_places, path_places; // per option
+  std::vector<std::string> warnings;      // points moved to reach the surface
 };
 
 // Locates the points on the soup's triangles, so before they are released.
@@ -442,11 +492,19 @@ Query_places<Solver, Element> query_places(const dggvtp::Loaded_soup& soup, cons
       range.push_back(v);
     return true;
   };
-  const auto add_point = [&](const Place& p, std::vector<Element>& range) {
+  // A point farther from the surface than rounding explains was probably not meant to be off it:
+  // say how far it was moved. The tolerance, 1e-6 of the bounding box's diagonal, is far above
+  // the error of a point written with 7 or more significant digits.
+  const auto add_point = [&](const Place& p, const char* option, std::vector<Element>& range) {
     if constexpr(by_location)
     {
       const auto l = locator->locate(p.point);
       range.emplace_back(l.first, std::array<FT, 3>{FT(l.second[0]), FT(l.second[1]), FT(l.second[2])});
+      const double moved = locator->distance(p.point, l);
+      if(moved > 1e-6 * locator->diagonal())
+        q.warnings.push_back(std::string(option) + " " + number_text(p.point[0]) + " " + number_text(p.point[1]) + " " +
+                             number_text(p.point[2]) + " is " + number_text(moved) +
+                             " away from the surface: taken at the nearest point of the surface");
     }
   };
 
@@ -455,7 +513,7 @@ Query_places<Solver, Element> query_places(const dggvtp::Loaded_soup& soup, cons
     const Place& p = options.sources[option];
     if(p.is_point)
     {
-      add_point(p, q.sources);
+      add_point(p, "--source-point", q.sources);
       q.source_option.push_back(option);
     }
     else
@@ -475,7 +533,7 @@ Query_places<Solver, Element> query_places(const dggvtp::Loaded_soup& soup, cons
       if(p.is_point)
       {
         t.point = q.targets.size();
-        add_point(p, q.targets);
+        add_point(p, places == &options.targets ? "--target-point" : "--path-to-point", q.targets);
       }
       else
       {
@@ -532,6 +590,7 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
   const Clock::time_point t0 = Clock::now();
   const Query_places<Solver, Element> q = query_places<Solver, Element>(soup, options);
   run.seconds_locate = seconds_since(t0);
+  run.warnings = q.warnings;
   if(q.sources.empty()) // the library refuses a query without sources, rightly: nothing to propagate
     throw dggvtp::Input_error("every source is a vertex that no face uses: no point of the surface can be reached");
   std::vector<Point_3> points;
@@ -644,15 +703,6 @@ Run compute(dggvtp::Loaded_soup& soup, const Options& options)
 }
 
 
-// "%.17g\n" as printf writes it (and "inf\n"), with std::to_chars: printf per line took most of
-// the writing time. At most 25 characters ("-1.2345678901234567e-308\n").
-char* put_distance_line(double d, char* out)
-{
-  out = std::to_chars(out, out + 24, d, std::chars_format::general, 17).ptr;
-  *out++ = '\n';
-  return out;
-}
-
 char* put_label_line(long long label, char* out)
 {
   out = std::to_chars(out, out + 20, label).ptr;
@@ -715,13 +765,6 @@ void write_labels(const std::vector<long long>& labels, const std::string& path,
     write_values(path, std::string(), labels, put_label_line);
 }
 
-// a number as the distances are written (%.17g, inf)
-std::string number_text(double d)
-{
-  char line[32];
-  return std::string(line, put_distance_line(d, line) - 1);
-}
-
 std::string place_text(const Place& p)
 {
   if(!p.is_point)
@@ -780,6 +823,12 @@ int run_main(int argc, char** argv)
     return 1;
   }
 
+  // a mistake in an output's name costs a moment, not the whole computation
+  for(const auto& [option, path] : {std::make_pair("--output", &options.output), std::make_pair("--labels", &options.labels),
+                                    std::make_pair("--paths", &options.paths), std::make_pair("--stats", &options.stats)})
+    if(!path->empty())
+      dggvtp::check_writable(std::string(option) + " '" + *path + "'", *path);
+
   const Clock::time_point t0 = Clock::now();
   dggvtp::Loaded_soup soup = dggvtp::load_soup(options.mesh);
   for(const auto& [places, what] : {std::make_pair(&options.sources, "source"), std::make_pair(&options.targets, "target"),
@@ -804,6 +853,9 @@ int run_main(int argc, char** argv)
   if(!options.quiet)
     for(const std::string& repair : soup.repairs)
       std::cerr << "warning: " << options.mesh << ": " << repair << "\n";
+  if(!options.quiet)
+    for(const std::string& warning : run.warnings)
+      std::cerr << "warning: " << warning << "\n";
 #ifndef CGAL_LINKED_WITH_TBB
   if(!options.quiet && options.threads != 1)
     std::cerr << "warning: dggvtp was built without TBB: the propagation ran on one thread\n";

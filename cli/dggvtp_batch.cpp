@@ -9,9 +9,11 @@
 // `dggvtp-batch --help`.
 //
 // How a run goes (every rank, unless said otherwise):
-//  1. parse the options, load the mesh, read the sources, build the solver (as dggvtp does);
-//  2. rank 0 opens the checkpoint directory (creating it, or checking that it was made by the
-//     same command and reading which rows are done) and tells the other ranks the done rows;
+//  1. parse the options, check that the outputs can be written, load the mesh, read the sources,
+//     build the solver (as dggvtp does);
+//  2. rank 0 checks the free space for the output, opens the checkpoint directory (creating it,
+//     or checking that it was made by the same command and reading which rows are done) and
+//     tells the other ranks the done rows;
 //  3. each rank computes its share of the missing rows (row i of the missing ones goes to rank
 //     i mod R), spread over its threads; each row is written at its offset in the checkpoint's
 //     copy of the output (MPI-IO under MPI), made durable, and only then recorded as done;
@@ -26,6 +28,7 @@
 #include <dggvtp/command_line.h>
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/npy.h>
+#include <dggvtp/output_paths.h>
 
 #include <CGAL/DGG_VTP_3.h>
 #include <CGAL/Simple_cartesian.h>
@@ -33,6 +36,8 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -103,8 +108,18 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
   --quiet                no summary, no warnings, no progress
   --help                 this text
 
-Exit status: 0 success, 1 bad usage, 2 bad input (unreadable mesh, bad source list, checkpoint
-of another command, write error), with one line on stderr starting with 'error:'.
+Before the mesh is loaded, every output (--output, --checkpoint, --sources-output, --stats) is
+checked to be writable; before the first row, the file's size (rows x vertices x 4 or 8 bytes,
+and a header) is checked against the free space of the file systems of the checkpoint and of
+the output.
+
+Exit status, by the kind of mistake (as for dggvtp): 0 success; 1 bad usage, a command line
+wrong whatever the mesh: an unknown option, a missing value, a value that is not a number, a
+value out of its range (an --epsilon outside [0, 1], fps:0), options that contradict each other; 2 bad input, a command line
+that this mesh or these files make wrong: fps:K beyond the vertices, a mesh or source list that
+cannot be read or is refused, an output or checkpoint that cannot be written, a checkpoint of
+another command, an output larger than the free space. Either way one line on stderr starting
+with 'error:'.
 )";
 
 using dggvtp::json_string;
@@ -125,6 +140,7 @@ struct Options : dggvtp::Propagation_options
   std::string sources;          // FILE, all or fps:K
   std::string output;           // the .npy file
   std::string checkpoint;       // default output + ".checkpoint"
+  bool checkpoint_given = false;
   std::string sources_output;   // optional
   std::string stats;            // optional
   Npy_dtype dtype = Npy_dtype::float64;
@@ -132,6 +148,13 @@ struct Options : dggvtp::Propagation_options
   bool progress = false;        // forced on by --progress
   bool quiet = false;
   bool help = false;
+
+  // Messages name the checkpoint as the user knows it: the path given, or the output it is made
+  // from (errors about the files inside it end with this)
+  std::string checkpoint_origin() const
+  {
+    return checkpoint_given ? std::string() : " (the default --checkpoint of --output '" + output + "')";
+  }
 };
 
 
@@ -206,11 +229,49 @@ Options parse_options(int argc, char** argv)
   if(options.output == "-")
     throw Usage_error("--output must be a file (rows are written at their offsets)");
   options.check();
-  if(options.sources.compare(0, 4, "fps:") == 0)
-    parse_number<std::size_t>("--sources fps:K", options.sources.substr(4));
-  if(options.checkpoint.empty())
+  if(options.sources.compare(0, 4, "fps:") == 0 && parse_number<std::size_t>("--sources fps:K", options.sources.substr(4)) == 0)
+    throw Usage_error("fps:0 selects no source");
+  options.checkpoint_given = !options.checkpoint.empty();
+  if(!options.checkpoint_given)
     options.checkpoint = options.output + ".checkpoint";
   return options;
+}
+
+// Before the mesh is loaded: every file the run writes can be written (a mistake in a name costs
+// a moment, not the rows).
+void check_outputs(const Options& options)
+{
+  struct stat info;
+  if(::stat(options.output.c_str(), &info) == 0 && !S_ISREG(info.st_mode))
+    throw Input_error("cannot write --output '" + options.output + "': it exists and is not a regular file (the " +
+                      "output is renamed into place)");
+  dggvtp::check_writable("--output '" + options.output + "'", options.output);
+  const std::string checkpoint =
+    (options.checkpoint_given ? "--checkpoint '" : "'") + options.checkpoint + "'" + options.checkpoint_origin();
+  if(::stat(options.checkpoint.c_str(), &info) != 0)
+    dggvtp::check_writable(checkpoint, options.checkpoint); // it can be made
+  else if(!S_ISDIR(info.st_mode))
+    throw Input_error("cannot write " + checkpoint + ": it is not a directory");
+  else
+    dggvtp::check_writable(checkpoint, options.checkpoint + "/rows.npy");
+  if(!options.sources_output.empty())
+    dggvtp::check_writable("--sources-output '" + options.sources_output + "'", options.sources_output);
+  if(!options.stats.empty())
+    dggvtp::check_writable("--stats '" + options.stats + "'", options.stats);
+}
+
+// Runs `f`; an error about the files of the default checkpoint also names the --output it is made from.
+template <class F>
+void in_checkpoint(const Options& options, F f)
+{
+  try
+  {
+    f();
+  }
+  catch(const Input_error& e)
+  {
+    throw Input_error(e.what() + options.checkpoint_origin());
+  }
 }
 
 // =============================================================================================
@@ -258,8 +319,6 @@ Sources read_sources(const std::string& spec, std::size_t file_vertices)
   {
     sources.farthest_point = true;
     sources.rows = parse_number<std::size_t>("--sources fps:K", spec.substr(4));
-    if(sources.rows == 0)
-      throw Input_error("fps:0 selects no source");
     if(sources.rows > file_vertices)
       throw Input_error("fps:" + std::to_string(sources.rows) + " asks for more sources than the mesh has vertices (" +
                         std::to_string(file_vertices) + ")");
@@ -456,6 +515,31 @@ struct Resume
   dggvtp::Directory_lock lock;     // held by rank 0 for the whole run
 };
 
+// Rank 0, before the checkpoint is made: the file systems of the checkpoint and of the output have
+// room for the rows still to write. The checkpoint's copy is a sparse file, which takes its space
+// only as the rows come: without this check a disk would fill up hours into the run.
+void check_room_for_output(const Options& options, const Checkpoint& checkpoint, std::size_t rows, std::size_t columns,
+                std::uint64_t file_size)
+{
+  struct stat info;
+  const bool exists = ::stat(checkpoint.directory.c_str(), &info) == 0;
+  // an existing copy's blocks are reused when resuming, or freed when starting over
+  std::uint64_t written = 0;
+  if(exists && ::stat(checkpoint.data().c_str(), &info) == 0)
+    written = (std::min)(file_size, std::uint64_t(info.st_blocks) * 512);
+  const std::string output = "--output '" + options.output + "' (" + std::to_string(rows) + " rows x " +
+                             std::to_string(columns) + " columns x " + std::to_string(dggvtp::npy_item_size(options.dtype)) +
+                             " bytes, and its header)";
+  const std::string where = exists ? checkpoint.directory : dggvtp::parent_directory(checkpoint.directory);
+  dggvtp::check_room(written > 0 ? "the rows still to write of " + output : output, file_size - written, where);
+  // the output is renamed from the checkpoint's copy, or copied beside it from another file system
+  const std::string output_directory = dggvtp::parent_directory(options.output);
+  struct stat output_info;
+  if(::stat(where.c_str(), &info) == 0 && ::stat(output_directory.c_str(), &output_info) == 0 &&
+     info.st_dev != output_info.st_dev)
+    dggvtp::check_room(output, file_size, output_directory);
+}
+
 // Rank 0: opens the checkpoint, or creates it. Returns the done rows.
 Resume open_checkpoint(const Checkpoint& checkpoint, const std::string& fingerprint, const std::string& header,
                        std::uint64_t file_size, const Sources& sources, std::size_t file_vertices)
@@ -613,16 +697,30 @@ void encode_row(const std::vector<double>& row, Npy_dtype dtype, std::vector<cha
     }
 }
 
+// For tests only: the number of rows after which this process kills itself (SIGKILL, as `kill -9`
+// would), right after they are durable and recorded, so that a test of resuming knows what a kill
+// left instead of racing the interval of the durable writes. DGGVTP_BATCH_TEST_KILL_AFTER_ROWS=K,
+// on rank DGGVTP_BATCH_TEST_KILL_RANK=R only if set. 0: never.
+std::size_t rows_before_test_kill(int rank)
+{
+  const char* rows = std::getenv("DGGVTP_BATCH_TEST_KILL_AFTER_ROWS");
+  const char* only = std::getenv("DGGVTP_BATCH_TEST_KILL_RANK");
+  if(rows == nullptr || (only != nullptr && parse_number<std::size_t>("DGGVTP_BATCH_TEST_KILL_RANK", only) != std::size_t(rank)))
+    return 0;
+  return parse_number<std::size_t>("DGGVTP_BATCH_TEST_KILL_AFTER_ROWS", rows);
+}
+
 // Writes rows at their offsets; every `interval` at most (and at the end) makes what was written
 // durable and only then reports those rows as done (`on_durable`: the record). A kill loses at
-// most the rows of the last interval. Safe to call from several threads.
+// most the rows of the last interval. Safe to call from several threads. With `kill_after` = K > 0
+// (tests only), the process kills itself once its first K rows are durable and reported.
 class Row_sink
 {
 public:
   Row_sink(dggvtp::Row_file& file, std::uint64_t header_size, std::uint64_t row_size, double interval,
-           std::function<void(const std::vector<std::size_t>&)> on_durable)
+           std::function<void(const std::vector<std::size_t>&)> on_durable, std::size_t kill_after)
     : m_file(file), m_header_size(header_size), m_row_size(row_size), m_interval(interval),
-      m_on_durable(std::move(on_durable)), m_last_sync(Clock::now())
+      m_on_durable(std::move(on_durable)), m_kill_after(kill_after), m_last_sync(Clock::now())
   {
   }
   void write(std::size_t row, const std::vector<char>& bytes)
@@ -630,6 +728,11 @@ public:
     std::lock_guard<std::mutex> lock(m_mutex);
     m_file.write_at(m_header_size + std::uint64_t(row) * m_row_size, bytes.data(), bytes.size());
     m_pending.push_back(row);
+    if(++m_written == m_kill_after)
+    {
+      flush_locked();
+      std::raise(SIGKILL);
+    }
     if(seconds_since(m_last_sync) >= m_interval)
       flush_locked();
   }
@@ -657,6 +760,8 @@ private:
   double m_interval;                       // seconds between two syncs at most
   std::function<void(const std::vector<std::size_t>&)> m_on_durable;
   std::vector<std::size_t> m_pending;      // written, not yet durable
+  std::size_t m_kill_after;                // tests only: rows written before the kill, 0 = never
+  std::size_t m_written = 0;               // rows written by this process
   Clock::time_point m_last_sync;
 };
 
@@ -857,10 +962,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     options = parse_options(argc, argv);
     if(options.help)
       return;
-    struct stat info;
-    if(::stat(options.output.c_str(), &info) == 0 && !S_ISREG(info.st_mode))
-      throw Input_error("cannot write '" + options.output + "': it exists and is not a regular file (the output " +
-                        "is renamed into place)");
+    check_outputs(options);
     const Clock::time_point t0 = Clock::now();
     one.soup = std::make_shared<dggvtp::Loaded_soup>(dggvtp::load_soup(options.mesh));
     one.file_vertices = one.soup->file_vertices;
@@ -907,9 +1009,13 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   // 2. rank 0 opens the checkpoint; the others learn the done rows
   Resume resume;
   status = collectively(comm, [&] {
-    if(root)
-      resume = open_checkpoint(checkpoint, fingerprint_of(options, sources, one.file_vertices), header, file_size,
-                               sources, one.file_vertices);
+    if(!root)
+      return;
+    const std::string fingerprint = fingerprint_of(options, sources, one.file_vertices);
+    check_room_for_output(options, checkpoint, sources.rows, one.file_vertices, file_size);
+    in_checkpoint(options, [&] {
+      resume = open_checkpoint(checkpoint, fingerprint, header, file_size, sources, one.file_vertices);
+    });
   });
   if(status != 0)
     return status;
@@ -927,6 +1033,10 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
 
   // 3. the missing rows
   const bool show_progress = root && !options.quiet && (options.progress || ::isatty(2));
+  std::size_t kill_after = 0;
+  status = collectively(comm, [&] { kill_after = rows_before_test_kill(comm.rank()); });
+  if(status != 0)
+    return status;
   const Clock::time_point t_compute = Clock::now();
   std::size_t computed = 0; // by this rank
   double seconds_own = 0.;  // this rank's rows, without waiting for the others
@@ -948,10 +1058,13 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
         // the state is saved after the rows it accounts for are durable: here, the copy taken
         // when those rows were written
         Fps_state durable_state;
-        Row_sink sink(file, header.size(), row_size, 1.0, [&](const std::vector<std::size_t>& rows) {
-          dggvtp::write_file_atomically(checkpoint.fps_state(), durable_state.bytes());
-          durable += rows.size();
-        });
+        Row_sink sink(
+          file, header.size(), row_size, 1.0,
+          [&](const std::vector<std::size_t>& rows) {
+            dggvtp::write_file_atomically(checkpoint.fps_state(), durable_state.bytes());
+            durable += rows.size();
+          },
+          kill_after);
         std::optional<Progress> progress;
         if(show_progress)
           progress.emplace([&] { return durable.load(); }, sources.rows, already_done);
@@ -1000,7 +1113,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
       dggvtp::Row_file file(checkpoint.data(), comm.uses_mpi());
       dggvtp::Record_file record(checkpoint.record(comm.rank()));
       Row_sink sink(file, header.size(), row_size, 1.0,
-                    [&](const std::vector<std::size_t>& rows) { record.append(rows); });
+                    [&](const std::vector<std::size_t>& rows) { record.append(rows); }, kill_after);
       std::optional<Progress> progress;
       if(show_progress)
         progress.emplace(
@@ -1026,7 +1139,10 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   }
   catch(const std::exception& e)
   {
-    const std::string what = dynamic_cast<const std::bad_alloc*>(&e) ? "out of memory" : e.what();
+    // the errors of the rows' files: of the checkpoint
+    const std::string what = dynamic_cast<const std::bad_alloc*>(&e) ? std::string("out of memory")
+                             : dynamic_cast<const Input_error*>(&e) ? e.what() + options.checkpoint_origin()
+                                                                    : std::string(e.what());
     std::cerr << "error: " << (comm.size() > 1 ? "rank " + std::to_string(comm.rank()) + ": " : std::string()) << what
               << std::endl;
     if(comm.size() > 1)
@@ -1044,14 +1160,14 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     if(!root)
       return;
     if(!sources.farthest_point)
-    {
-      std::vector<unsigned char> done(sources.rows, 0);
-      dggvtp::read_records(checkpoint.directory, done);
-      for(std::size_t r = 0; r < sources.rows; ++r)
-        if(!done[r])
-          throw Input_error("row " + std::to_string(r) + " is not recorded as done after the run (the checkpoint '" +
-                            checkpoint.directory + "' was changed meanwhile?)");
-    }
+      in_checkpoint(options, [&] {
+        std::vector<unsigned char> done(sources.rows, 0);
+        dggvtp::read_records(checkpoint.directory, done);
+        for(std::size_t r = 0; r < sources.rows; ++r)
+          if(!done[r])
+            throw Input_error("row " + std::to_string(r) + " is not recorded as done after the run (the checkpoint '" +
+                              checkpoint.directory + "' was changed meanwhile?)");
+      });
     finish_checkpoint(checkpoint, options.output);
     if(!options.sources_output.empty())
     {

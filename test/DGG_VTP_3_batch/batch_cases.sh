@@ -79,13 +79,17 @@ wait_for_records() {
   done
   return 1
 }
-# rank_processes PID: the dggvtp-batch processes started under PID (the launcher's children)
-rank_processes() {
-  local child
-  for child in $(pgrep -P "$1"); do
-    [ "$(cat "/proc/$child/comm" 2>/dev/null)" = dggvtp-batch ] && echo "$child"
-    rank_processes "$child"
-  done
+# records CHECKPOINT RANK: the number of rows RANK recorded as done
+records() { cat "$1/done.$2" 2>/dev/null | wc -l; }
+# The kills are the test hook's (DGGVTP_BATCH_TEST_KILL_AFTER_ROWS=K, and _RANK=R): the process
+# kills itself with SIGKILL right after its K-th row is durable and recorded, so a test knows
+# what the kill left, whatever the speed of the machine (rows become durable every second, and a
+# kill from outside races that timer).
+# grid: OBJ of a bumpy 5 x 4 grid of vertices, 24 triangles: the smallest mesh worth a run
+grid() {
+  awk 'BEGIN { for (i = 0; i < 20; ++i) print "v", i % 5, int(i / 5), (i % 3) * 0.1
+               for (y = 0; y < 3; ++y) for (x = 0; x < 4; ++x) { a = y * 5 + x + 1
+                 print "f", a, a + 1, a + 6; print "f", a, a + 6, a + 5 } }'
 }
 # lion_head, 60 sources spread over the mesh, in a shuffled order: a few seconds of work
 lion_sources() { awk 'BEGIN { for (i = 0; i < 60; ++i) print (i * 4099) % 8356 }'; }
@@ -95,6 +99,7 @@ usage)
   run "$spot" --output out.npy; expect_usage_error
   run "$spot" --sources all; expect_usage_error
   run "$spot" --sources fps:x --output out.npy; expect_usage_error
+  run "$spot" --sources fps:0 --output out.npy; expect_usage_error
   run "$spot" --sources all --output out.npy --dtype float16; expect_usage_error
   run "$spot" --sources all --output - ; expect_usage_error
   run "$spot" --sources all --output out.npy --exact --epsilon 1e-3; expect_usage_error
@@ -112,7 +117,6 @@ bad_source_lists)
   printf '1 2.5\n' > fraction.txt
   run "$spot" --sources fraction.txt --output out.npy; expect_input_error "not a vertex index"
   run "$spot" --sources missing.txt --output out.npy; expect_input_error "cannot read the source list"
-  run "$spot" --sources fps:0 --output out.npy; expect_input_error "no source"
   run "$spot" --sources fps:2931 --output out.npy; expect_input_error "more sources than"
   [ -z "$(ls -A)" ] || [ "$(ls | grep -v '\.txt$')" = "" ] || fail "files left behind: $(ls)"
   ;;
@@ -129,9 +133,7 @@ rows_equal_dggvtp)
   ;;
 all_sources_and_threads)
   # --sources all on a small mesh: row v is vertex v's field; any thread count, the same bytes
-  awk 'BEGIN { for (i = 0; i < 20; ++i) print "v", i % 5, int(i / 5), (i % 3) * 0.1
-               for (y = 0; y < 3; ++y) for (x = 0; x < 4; ++x) { a = y * 5 + x + 1
-                 print "f", a, a + 1, a + 6; print "f", a, a + 6, a + 5 } }' > grid.obj
+  grid > grid.obj
   run grid.obj --sources all --output one.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
   expect_shape one.npy "20 20 float64"; same_as_dggvtp one.npy grid.obj "$(seq 0 19)"
   lion_sources > l.txt
@@ -157,45 +159,40 @@ mpi_ranks_and_threads)
   done
   ;;
 kill_and_resume)
-  # one process killed (SIGKILL) mid-way, run again: only the missing rows, the same bytes
+  # one process killed (SIGKILL) after 7 durable rows, run again: only the 53 missing rows, the same bytes
   lion_sources > l.txt
   run "$lion" --sources l.txt --output ref.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
-  "$batch" "$lion" --sources l.txt --output out.npy --quiet 2>/dev/null &
-  pid=$!
-  wait_for_records out.npy.checkpoint "$pid" || fail "no row recorded before the run ended"
-  kill -9 "$pid"; wait "$pid" 2>/dev/null
+  DGGVTP_BATCH_TEST_KILL_AFTER_ROWS=7 "$batch" "$lion" --sources l.txt --output out.npy --quiet 2>/dev/null
+  rc=$?
+  [ "$rc" -eq 137 ] || fail "exit status $rc, expected 137 (killed by SIGKILL after 7 rows)"
   [ ! -e out.npy ] || fail "the killed run left an output file"
+  [ "$(records out.npy.checkpoint 0)" -eq 7 ] || fail "$(records out.npy.checkpoint 0) rows recorded, expected 7"
   # a torn last record (the kill came while appending) is ignored
   printf '5' >> out.npy.checkpoint/done.0
   run "$lion" --sources l.txt --output out.npy --stats st.json --quiet; [ "$rc" -eq 0 ] || fail "$err"
   cmp -s ref.npy out.npy || fail "the resumed run wrote other bytes"
   resumed=$(json_field st.json rows_resumed) computed=$(json_field st.json rows_computed)
-  [ "$resumed" -gt 0 ] && [ "$computed" -gt 0 ] && [ $((resumed + computed)) -eq 60 ] ||
-    fail "resumed $resumed + computed $computed rows, expected some of each, 60 in all"
+  [ "$resumed" -eq 7 ] && [ "$computed" -eq 53 ] || fail "resumed $resumed + computed $computed rows, expected 7 + 53"
   echo "killed after $resumed rows, resumed with $computed"
   [ ! -e out.npy.checkpoint ] || fail "the checkpoint was left behind"
   ;;
 mpi_kill_one_rank_and_resume)
-  # one of 3 ranks killed (SIGKILL) mid-way, the job run again on 2 ranks: the same bytes
+  # rank 1 of 3 killed (SIGKILL) after 3 durable rows of its 20, the job run again on 2 ranks: the
+  # same bytes, at least rank 1's other 17 rows computed again
   need_mpi
   lion_sources > l.txt
   run "$lion" --sources l.txt --output ref.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
-  mpi 3 "$lion" --sources l.txt --output out.npy --quiet > mpi.log 2>&1 &
-  launcher=$!
-  wait_for_records out.npy.checkpoint "$launcher" || fail "no row recorded before the run ended: $(cat mpi.log)"
-  ranks=$(rank_processes "$launcher" | tr '\n' ' ')
-  victim=$(echo "$ranks" | awk '{ print $2 }')
-  [ -n "$victim" ] || fail "no rank process found under the launcher ($ranks)"
-  kill -9 "$victim"
-  wait "$launcher"
-  [ $? -ne 0 ] || fail "the launcher reported success after a rank was killed"
+  DGGVTP_BATCH_TEST_KILL_AFTER_ROWS=3 DGGVTP_BATCH_TEST_KILL_RANK=1 \
+    mpi 3 "$lion" --sources l.txt --output out.npy --quiet > mpi.log 2>&1 &&
+    fail "the launcher reported success after a rank was killed"
   [ ! -e out.npy ] || fail "the killed run left an output file"
+  [ "$(records out.npy.checkpoint 1)" -eq 3 ] || fail "rank 1 recorded $(records out.npy.checkpoint 1) rows, expected 3: $(cat mpi.log)"
   mpi 2 "$lion" --sources l.txt --output out.npy --stats st.json --quiet > mpi.log 2>&1 || fail "resume: $(cat mpi.log)"
   cmp -s ref.npy out.npy || fail "the resumed run wrote other bytes"
   resumed=$(json_field st.json rows_resumed) computed=$(json_field st.json rows_computed)
-  [ "$resumed" -gt 0 ] && [ "$computed" -gt 0 ] && [ $((resumed + computed)) -eq 60 ] ||
-    fail "resumed $resumed + computed $computed rows, expected some of each, 60 in all"
-  echo "rank killed after $resumed rows were recorded, resumed with $computed"
+  [ "$resumed" -ge 3 ] && [ "$computed" -ge 17 ] && [ $((resumed + computed)) -eq 60 ] ||
+    fail "resumed $resumed + computed $computed rows, expected >= 3 + >= 17, 60 in all"
+  echo "rank 1 killed after 3 rows, $resumed recorded in all, resumed with $computed"
   ;;
 resume_refuses_another_command)
   lion_sources > l.txt
@@ -249,14 +246,13 @@ farthest_point_sampling)
   ;;
 farthest_point_sampling_resumes)
   run "$lion" --sources fps:40 --output ref.npy --sources-output ref.txt --quiet; [ "$rc" -eq 0 ] || fail "$err"
-  "$batch" "$lion" --sources fps:40 --output out.npy --quiet 2>/dev/null &
-  pid=$!
-  for ((i = 0; i < 600; ++i)); do [ -e out.npy.checkpoint/fps_state ] && break; kill -0 "$pid" 2>/dev/null || break; sleep 0.05; done
-  kill -9 "$pid"; wait "$pid" 2>/dev/null
-  [ -e out.npy.checkpoint/fps_state ] || fail "no farthest-point state recorded before the run ended"
+  DGGVTP_BATCH_TEST_KILL_AFTER_ROWS=5 "$batch" "$lion" --sources fps:40 --output out.npy --quiet 2>/dev/null
+  rc=$?
+  [ "$rc" -eq 137 ] || fail "exit status $rc, expected 137 (killed by SIGKILL after 5 rows)"
+  [ -e out.npy.checkpoint/fps_state ] || fail "no farthest-point state recorded before the kill"
   run "$lion" --sources fps:40 --output out.npy --sources-output out.txt --stats st.json --quiet; [ "$rc" -eq 0 ] || fail "$err"
   cmp -s ref.npy out.npy && cmp -s ref.txt out.txt || fail "the resumed fps run differs"
-  [ "$(json_field st.json rows_resumed)" -gt 0 ] || fail "nothing was resumed"
+  [ "$(json_field st.json rows_resumed)" -eq 5 ] || fail "$(json_field st.json rows_resumed) rows resumed, expected 5"
   ;;
 progress)
   run "$spot" --sources fps:3 --output out.npy --progress
@@ -264,6 +260,119 @@ progress)
   printf '%s\n' "$err" | grep -q "dggvtp-batch: 3/3 rows (100.0%)" || fail "no progress line: $err"
   run "$spot" --sources fps:3 --output out.npy
   [ -z "$err" ] || fail "progress without --progress nor a terminal: $err"
+  ;;
+exit_code_table)
+  # one rule for every option: 1 = wrong whatever the mesh (unknown option, missing value, not a
+  # number, negative, NaN, contradiction), 2 = wrong for this mesh or these files (out of range,
+  # unreadable or refused file, unwritable output); MESH is a 20-vertex grid, W/ a missing directory
+  grid > grid.obj
+  printf '1 2\n' > s.txt; printf '1 20\n' > range.txt; printf '1 -2\n' > negative.txt
+  while read -r expected args; do
+    [ -n "$expected" ] && [ "${expected:0:1}" != "#" ] || continue
+    rm -rf o.npy o.npy.checkpoint cp so.txt st.json
+    words=(); for w in $args; do w=${w/#MESH/grid.obj}; words+=("${w/#W\//$work/missing/}"); done
+    run "${words[@]}"
+    [ "$rc" -eq "$expected" ] || fail "$args: exit status $rc, expected $expected; stderr: $err"
+    if [ "$expected" -ne 0 ]; then
+      [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] && [[ "$err" == error:* ]] || fail "$args: not one error: line: $err"
+      [ ! -e o.npy ] && [ ! -e o.npy.checkpoint ] || fail "$args: files left behind"
+    fi
+  done <<'TABLE'
+0 MESH --sources s.txt --output o.npy
+0 MESH --sources all --output o.npy
+0 MESH --sources fps:2 --output o.npy
+1
+1 MESH MESH --sources s.txt --output o.npy
+2 W/none.ply --sources s.txt --output o.npy
+1 MESH --frobnicate --sources s.txt --output o.npy
+1 MESH --output o.npy
+1 MESH --output o.npy --sources
+1 MESH --sources fps:x --output o.npy
+1 MESH --sources fps:-1 --output o.npy
+1 MESH --sources fps:0 --output o.npy
+2 MESH --sources fps:21 --output o.npy
+2 MESH --sources W/none.txt --output o.npy
+2 MESH --sources range.txt --output o.npy
+2 MESH --sources negative.txt --output o.npy
+1 MESH --sources s.txt
+1 MESH --sources s.txt --output
+1 MESH --sources s.txt --output -
+2 MESH --sources s.txt --output W/o.npy
+0 MESH --sources s.txt --output o.npy --dtype float32
+1 MESH --sources s.txt --output o.npy --dtype float16
+1 MESH --sources s.txt --output o.npy --dtype
+0 MESH --sources s.txt --output o.npy --exact
+1 MESH --sources s.txt --output o.npy --exact --epsilon 1e-3
+0 MESH --sources s.txt --output o.npy --epsilon 1e-3
+1 MESH --sources s.txt --output o.npy --epsilon -1
+1 MESH --sources s.txt --output o.npy --epsilon 2
+1 MESH --sources s.txt --output o.npy --epsilon nan
+1 MESH --sources s.txt --output o.npy --epsilon inf
+1 MESH --sources s.txt --output o.npy --epsilon abc
+1 MESH --sources s.txt --output o.npy --epsilon
+0 MESH --sources s.txt --output o.npy --precision float
+1 MESH --sources s.txt --output o.npy --precision half
+1 MESH --sources s.txt --output o.npy --precision
+0 MESH --sources s.txt --output o.npy --threads 2
+1 MESH --sources s.txt --output o.npy --threads -1
+1 MESH --sources s.txt --output o.npy --threads two
+1 MESH --sources s.txt --output o.npy --threads 5000
+1 MESH --sources s.txt --output o.npy --threads
+0 MESH --sources s.txt --output o.npy --checkpoint cp
+2 MESH --sources s.txt --output o.npy --checkpoint W/cp
+1 MESH --sources s.txt --output o.npy --checkpoint
+0 MESH --sources s.txt --output o.npy --sources-output so.txt
+2 MESH --sources s.txt --output o.npy --sources-output W/so.txt
+1 MESH --sources s.txt --output o.npy --sources-output
+0 MESH --sources s.txt --output o.npy --stats st.json
+2 MESH --sources s.txt --output o.npy --stats W/st.json
+1 MESH --sources s.txt --output o.npy --stats
+0 MESH --sources s.txt --output o.npy --progress
+0 MESH --sources s.txt --output o.npy --quiet
+0 --help
+TABLE
+  ;;
+outputs_checked_before_loading)
+  # an output that cannot be written is refused before the mesh is read: the error names it, not
+  # the (missing) mesh, and nothing is left behind
+  printf '1 2\n' > s.txt
+  for args in "--output $work/missing/o.npy" "--output o.npy --checkpoint $work/missing/cp" \
+              "--output o.npy --sources-output $work/missing/s.txt" "--output o.npy --stats $work/missing/st.json"; do
+    run "$work/none.ply" --sources s.txt $args; expect_input_error "$work/missing/"
+    [[ "$err" == *"cannot write --"* ]] || fail "$args: the error does not name the option: $err"
+    [ "$(ls)" = s.txt ] || fail "$args: files left behind: $(ls)"
+  done
+  ;;
+errors_name_the_users_paths)
+  # the default checkpoint is a path the user never typed: its errors name --output too
+  touch out.npy.checkpoint
+  run "$spot" --sources fps:2 --output out.npy; expect_input_error "--output 'out.npy'"
+  rm out.npy.checkpoint
+  lion_sources > l.txt
+  DGGVTP_BATCH_TEST_KILL_AFTER_ROWS=2 "$batch" "$lion" --sources l.txt --output out.npy --quiet 2>/dev/null
+  [ "$?" -eq 137 ] || fail "the run was not killed"
+  run "$lion" --sources l.txt --output out.npy --epsilon 1e-5; expect_input_error "belongs to another command"
+  [[ "$err" == *"--output 'out.npy'"* ]] || fail "the error does not name --output: $err"
+  ;;
+refuses_output_larger_than_free_space)
+  # DGGVTP_BATCH_TEST_FREE_BYTES (tests only) stands for the file system's free space: spot with
+  # --sources all is 2930 x 2930 x 8 bytes + a 128-byte header = 68679328 bytes
+  DGGVTP_BATCH_TEST_FREE_BYTES=68679327 run "$spot" --sources all --output out.npy
+  expect_input_error "needs 68679328 bytes (65.5 MiB) on the file system of '.', which has 68679327 bytes (65.5 MiB) free"
+  [[ "$err" == *"--output 'out.npy' (2930 rows x 2930 columns x 8 bytes"* ]] || fail "the size is not explained: $err"
+  [ ! -e out.npy.checkpoint ] || fail "a checkpoint was left behind"
+  # just enough room (the 20-vertex grid: 20 x 20 x 8 + 128 = 3328 bytes)
+  grid > grid.obj
+  DGGVTP_BATCH_TEST_FREE_BYTES=3327 run grid.obj --sources all --output out.npy; expect_input_error "needs 3328 bytes"
+  DGGVTP_BATCH_TEST_FREE_BYTES=3328 run grid.obj --sources all --output out.npy; [ "$rc" -eq 0 ] || fail "$err"
+  expect_shape out.npy "20 20 float64"
+  # resuming needs room for the rows still to write only
+  rm out.npy
+  DGGVTP_BATCH_TEST_KILL_AFTER_ROWS=10 "$batch" "$spot" --sources all --output out.npy --quiet 2>/dev/null
+  [ "$?" -eq 137 ] || fail "the run was not killed"
+  DGGVTP_BATCH_TEST_FREE_BYTES=1000 run "$spot" --sources all --output out.npy
+  expect_input_error "the rows still to write of --output 'out.npy'"
+  [ -e out.npy.checkpoint ] || fail "the checkpoint was removed"
   ;;
 *)
   fail "unknown case"

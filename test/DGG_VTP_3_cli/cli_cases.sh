@@ -704,11 +704,8 @@ PY
       fail "npy of unreachable vertices: $(od -An -tx8 -j "$npy_data" "$work/u.npy")"
     check_npy "$work/u_l.npy" '<i8' 7
     [ "$(od -An -v -td8 -j "$npy_data" "$work/u_l.npy" | tr -s ' \n' ' ')" = " 0 0 0 -1 -1 -1 -1 " ] || fail "npy labels of unreachable vertices" ;;
-  bad_query_values)  # bad usage: exit 1; values out of range and places the mesh does not have: exit 2, no output
-    for args in "--max-distance -1" "--max-distance nan" "--source-point 0 inf 0" "--target-point nan 0 0"; do
-      run "$spot" $args --output "$work/d.txt"; expect_input_error
-    done
-    for args in "--max-distance abc" "--path-to-point 1 2 x" "--source-point 1 2" "--target -3" \
+  bad_query_values)  # bad usage: exit 1; places the mesh does not have: exit 2, no output
+    for args in "--max-distance -1" "--max-distance nan" "--source-point 0 inf 0" "--target-point nan 0 0" "--max-distance abc" "--path-to-point 1 2 x" "--source-point 1 2" "--target -3" \
                 "--output-format csv" "--paths $work/p.obj" "--target 3 --output $work/d.txt" \
                 "--path-to 3 --labels $work/l.txt" "--output - --labels -" "--target 3 --output -"; do
       run "$spot" $args; expect_usage_error
@@ -769,6 +766,129 @@ PY
     printf 'OFF\n500000000 500000000 0\n0 0 0\n' | input huge.off
     run "$work/huge.off" --output "$work/d.txt"; expect_input_error
     [[ "$err" != *"out of memory"* ]] || fail "$err" ;;
+  exit_code_table)
+    # one rule for every option: 1 = wrong whatever the mesh (unknown option, missing value, not a
+    # number, negative, NaN or infinite, a negative index, a contradiction), 2 = wrong for this mesh
+    # or these files (an index out of range, an unreadable or refused file, an unwritable output);
+    # MESH is a 143-vertex grid, W/ the scratch directory, X/ a directory that does not exist
+    bumpy > "$work/b.off"
+    while read -r expected args; do
+      [ -n "$expected" ] || continue
+      rm -f "$work"/*.txt "$work"/*.json "$work"/*.obj "$work"/*.npy
+      words=(); for w in $args; do w=${w/#MESH/$work/b.off}; w=${w/#W\//$work/}; words+=("${w/#X\//$work/missing/}"); done
+      run "${words[@]}"
+      [ "$rc" -eq "$expected" ] || fail "$args: exit status $rc, expected $expected; stderr: $err"
+      if [ "$expected" -ne 0 ]; then
+        [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] && [[ "$err" == error:* ]] || fail "$args: not one error: line: $err"
+        [ -z "$(ls "$work" | grep -v '^b.off$')" ] || fail "$args: files left behind: $(ls "$work")"
+      fi
+    done <<'TABLE'
+0 MESH
+1
+1 MESH MESH
+2 X/none.off
+2 W/b.off.missing
+1 MESH --frobnicate
+0 MESH --source 5
+1 MESH --source -1
+1 MESH --source 1x
+1 MESH --source
+2 MESH --source 143
+0 MESH --target 5
+1 MESH --target -1
+1 MESH --target
+2 MESH --target 143
+0 MESH --path-to 5
+1 MESH --path-to -1
+1 MESH --path-to
+2 MESH --path-to 143
+0 MESH --source-point 1 1 0
+1 MESH --source-point 1 1 nan
+1 MESH --source-point 1 inf 1
+1 MESH --source-point x 1 1
+1 MESH --source-point 1 1
+0 MESH --target-point 1 1 0
+1 MESH --target-point nan 1 0
+1 MESH --target-point 1 1
+0 MESH --path-to-point 1 1 0
+1 MESH --path-to-point 1 -inf 0
+1 MESH --path-to-point 1 1
+0 MESH --path-to 5 --paths W/p.obj
+1 MESH --paths W/p.obj
+1 MESH --path-to 5 --paths
+2 MESH --path-to 5 --paths X/p.obj
+2 MESH --path-to 143 --paths W/p.obj
+0 MESH --max-distance 0.5
+0 MESH --max-distance inf
+1 MESH --max-distance -1
+1 MESH --max-distance nan
+1 MESH --max-distance abc
+1 MESH --max-distance
+0 MESH --exact
+1 MESH --exact --epsilon 1e-3
+0 MESH --epsilon 1e-3
+1 MESH --epsilon -1
+1 MESH --epsilon 2
+1 MESH --epsilon nan
+1 MESH --epsilon inf
+1 MESH --epsilon abc
+1 MESH --epsilon
+0 MESH --precision float
+1 MESH --precision half
+1 MESH --precision
+0 MESH --threads 2
+1 MESH --threads -1
+1 MESH --threads two
+1 MESH --threads
+0 MESH --output W/d.txt
+1 MESH --output
+2 MESH --output X/d.txt
+2 MESH --output W/
+1 MESH --target 5 --output W/d.txt
+0 MESH --labels W/l.txt
+1 MESH --labels
+2 MESH --labels X/l.txt
+1 MESH --output - --labels -
+0 MESH --output W/d.npy --output-format npy
+1 MESH --output-format csv
+1 MESH --output-format
+0 MESH --stats W/s.json
+1 MESH --stats
+2 MESH --stats X/s.json
+0 MESH --quiet
+0 --help
+TABLE
+    ;;
+  outputs_checked_before_loading)
+    # an output that cannot be written is refused before the mesh is read: the error names it, not
+    # the (missing) mesh, and nothing is left behind
+    for args in "--output $work/missing/d.txt" "--labels $work/missing/l.txt" "--stats $work/missing/s.json" \
+                "--path-to 1 --paths $work/missing/p.obj" "--output $work"; do
+      run "$work/none.off" $args; expect_input_error
+      [[ "$err" == "error: cannot write --"*"'$work"* ]] || fail "$args: the error does not name the output: $err"
+      [ -z "$(ls "$work")" ] || fail "$args: files left behind: $(ls "$work")"
+    done
+    # and an output that can be written leaves nothing behind when the mesh is refused
+    run "$work/none.off" --output "$work/d.txt" --stats "$work/s.json"; expect_input_error
+    [[ "$err" == *none.off* ]] || fail "the mesh is not named: $err"
+    [ -z "$(ls "$work")" ] || fail "files left behind: $(ls "$work")" ;;
+  far_point_warns)  # a point off the surface is taken at the nearest point of the surface, with a warning
+    # quad.off: the unit square at z = 0, diagonal sqrt(2): the tolerance is 1.4e-6
+    run "$data/quad.off" --source-point 0.25 0.5 3 --output "$work/d.txt"; expect_rc 0
+    printf '%s\n' "$err" | grep -qx "warning: --source-point 0.25 0.5 3 is 3 away from the surface: taken at the nearest point of the surface" ||
+      fail "no warning for the source: $err"
+    run "$data/quad.off" --source 0 --target-point 0.5 0.5 -2 --path-to-point 2 0.5 0; expect_rc 0
+    printf '%s\n' "$err" | grep -q "^warning: --target-point 0.5 0.5 -2 is 2 away" || fail "no warning for the target: $err"
+    printf '%s\n' "$err" | grep -q "^warning: --path-to-point 2 0.5 0 is 1 away" || fail "no warning for the path: $err"
+    run "$data/quad.off" --source-point 0.25 0.5 1e-5 --output "$work/d.txt"; expect_rc 0
+    printf '%s\n' "$err" | grep -q "^warning: --source-point 0.25 0.5 1.0000000000000001e-05 is 1.0000000000000001e-05 away" ||
+      fail "no warning 1e-5 away: $err"
+    for z in 0 1e-7; do   # on the surface, and within the tolerance
+      run "$data/quad.off" --source-point 0.25 0.5 $z --output "$work/d.txt"; expect_rc 0
+      ! printf '%s\n' "$err" | grep -q "^warning: --source-point" || fail "a warning $z away: $err"
+    done
+    run "$data/quad.off" --quiet --source-point 0.25 0.5 3 --output "$work/d.txt"; expect_rc 0
+    [ -z "$err" ] || fail "--quiet, yet: $err" ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"
