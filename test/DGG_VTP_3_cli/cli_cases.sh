@@ -177,6 +177,9 @@ case $case in
     for args in "--source -1" "--source 1x" "--epsilon -1" "--epsilon nan" "--epsilon abc" "--threads two" "--precision half"; do
       run "$spot" $args; expect_usage_error
     done ;;
+  epsilon_out_of_range_says_why)  # spot at 10 left 1,821 vertices at inf with exit 0 (issue 31)
+    run "$spot" --epsilon 10 --output "$work/d.txt"; expect_usage_error
+    [[ "$err" == *"[0, 1]"* ]] || fail "the error does not give the supported range: $err" ;;
   exact_and_epsilon_conflict) run "$spot" --exact --epsilon 1e-4; expect_usage_error ;;
   spot_output_and_stats)
     run "$spot" --output "$work/d.txt" --stats "$work/s.json"; expect_rc 0
@@ -196,7 +199,7 @@ case $case in
     [[ "$err" == *"dggvtp:"* ]] || fail "the summary should go to stderr" ;;
   epsilon_within_contract)
     run "$spot" --quiet --output "$work/exact.txt"; expect_rc 0
-    for e in 1e-4 1e-6; do
+    for e in 1 1e-1 1e-2 1e-3 1e-4 1e-6; do
       run "$spot" --quiet --epsilon $e --output "$work/approx.txt"; expect_rc 0
       paste "$work/approx.txt" "$work/exact.txt" | awk -v e=$e '$2 > 0 { r = ($1 - $2) / $2; if (r > e || r < -1e-12) { print NR, r; bad = 1 } } END { exit bad }' \
         || fail "epsilon $e: a distance outside the contract"
@@ -828,7 +831,10 @@ PY
 1 MESH --exact --epsilon 1e-3
 0 MESH --epsilon 1e-3
 1 MESH --epsilon -1
+0 MESH --epsilon 1
+1 MESH --epsilon 1.0000001
 1 MESH --epsilon 2
+1 MESH --epsilon 10
 1 MESH --epsilon nan
 1 MESH --epsilon inf
 1 MESH --epsilon abc
