@@ -1,0 +1,81 @@
+"""Every computation releases the GIL: another Python thread runs while one is inside a call.
+
+No clock is read. A counter thread increments a counter as fast as it can; a worker reads it just
+before and just after a call. With the GIL held for the whole call, no other Python thread can run
+in between (the worker executes no Python function between the two reads, so CPython has no point
+at which to hand the GIL over), and the two reads are equal, whatever the number of calls. With the
+GIL released, the counter thread runs during the call: the worker repeats calls until it sees that,
+and it does at the first calls, bounded by a generous number of tries."""
+import threading
+
+import numpy as np
+import pytest
+
+import dggvtp
+from conftest import mesh
+
+TRIES = 200
+
+
+@pytest.fixture(scope="module")
+def bunny():
+    return dggvtp.GeodesicSolver(*dggvtp.read_mesh(mesh("bunny.ply")))
+
+
+def counter_moves_during(call):
+    counter = [0]
+    stop = threading.Event()
+
+    def count():
+        while not stop.is_set():
+            counter[0] += 1
+
+    counting = threading.Thread(target=count)
+    counting.start()
+    try:
+        for _ in range(TRIES):
+            before = counter[0]
+            call()
+            after = counter[0]
+            if after > before:
+                return True
+        return False
+    finally:
+        stop.set()
+        counting.join()
+
+
+@pytest.mark.parametrize("query", ["distances", "points", "labels", "from_each", "targets", "path"])
+def test_gil_released(bunny, query):
+    calls = {
+        "distances": lambda: bunny.distances(0, epsilon=1e-4),
+        "points": lambda: bunny.distances(points=[0.0, 0.1, 0.0], epsilon=1e-4),
+        "labels": lambda: bunny.distances([0, 9], epsilon=1e-4, return_labels=True),
+        "from_each": lambda: bunny.distances_from_each([0, 9], epsilon=1e-4),
+        "targets": lambda: bunny.target_distances(0, targets=[20000], epsilon=1e-4),
+        "path": lambda: bunny.shortest_path(0, target=20000, epsilon=1e-4),
+    }
+    assert counter_moves_during(calls[query])
+
+
+def test_gil_released_while_loading(tmp_path):
+    assert counter_moves_during(lambda: dggvtp.read_mesh(mesh("bunny.ply")))
+    V, F = dggvtp.read_mesh(mesh("bunny.ply"))
+    assert counter_moves_during(lambda: dggvtp.GeodesicSolver(V, F))
+
+
+def test_two_threads_one_solver(bunny):
+    # queries at once on one solver give what they give one after the other
+    expected = [bunny.distances(s, epsilon=1e-4) for s in (0, 5000, 10000, 15000)]
+    results = [None] * 4
+
+    def run(k):
+        results[k] = bunny.distances([0, 5000, 10000, 15000][k], epsilon=1e-4)
+
+    threads = [threading.Thread(target=run, args=(k,)) for k in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for r, e in zip(results, expected):
+        assert np.array_equal(r, e)
