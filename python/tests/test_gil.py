@@ -1,12 +1,15 @@
 """Every computation releases the GIL: another Python thread runs while one is inside a call.
 
-No clock is read. A counter thread increments a counter as fast as it can; a worker reads it just
-before and just after a call. With the GIL held for the whole call, no other Python thread can run
-in between (the worker executes no Python function between the two reads, so CPython has no point
-at which to hand the GIL over), and the two reads are equal, whatever the number of calls. With the
-GIL released, the counter thread runs during the call: the worker repeats calls until it sees that,
-and it does at the first calls, bounded by a generous number of tries."""
+No clock is read. A counter thread increments a counter and gives the GIL away at each step
+(time.sleep(0)); a worker reads the counter just before and just after a call. CPython's forced
+switches are put off (switch interval 1000 s), so a thread gives the GIL only when it blocks: if
+the call held the GIL, the counter could not move between the two reads, whatever the number of
+calls (checked with sum(), which holds it). Released, the counter moves during the call: the worker
+repeats calls until it sees that, which it does at the first ones (bounded by TRIES).
+"""
+import sys
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -14,7 +17,7 @@ import pytest
 import dggvtp
 from conftest import mesh
 
-TRIES = 200
+TRIES = 50
 
 
 @pytest.fixture(scope="module")
@@ -29,7 +32,10 @@ def counter_moves_during(call):
     def count():
         while not stop.is_set():
             counter[0] += 1
+            time.sleep(0)  # gives the GIL away
 
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1000.0)
     counting = threading.Thread(target=count)
     counting.start()
     try:
@@ -43,6 +49,11 @@ def counter_moves_during(call):
     finally:
         stop.set()
         counting.join()
+        sys.setswitchinterval(interval)
+
+
+def test_the_test_sees_a_call_holding_the_gil():
+    assert not counter_moves_during(lambda: sum(range(10**6)))
 
 
 @pytest.mark.parametrize("query", ["distances", "points", "labels", "from_each", "targets", "path"])
