@@ -132,14 +132,7 @@ struct Options : dggvtp::Propagation_options
 
   // targets and paths end the propagation early
   bool stops_early() const { return !targets.empty() || !path_targets.empty(); }
-  bool has_points() const
-  {
-    for(const auto* places : {&sources, &targets, &path_targets})
-      for(const Place& p : *places)
-        if(p.is_point)
-          return true;
-    return false;
-  }
+  bool has_points() const { return dggvtp::has_points({&sources, &targets, &path_targets}); }
 };
 
 

@@ -46,14 +46,7 @@ struct Query
   double max_distance = std::numeric_limits<double>::infinity();
   long threads = 1;                // 0 = all cores; 1 = sequential
 
-  bool has_points() const
-  {
-    for(const auto* places : {&sources, &targets, &path_targets})
-      for(const Place& p : *places)
-        if(p.is_point)
-          return true;
-    return false;
-  }
+  bool has_points() const { return dggvtp::has_points({&sources, &targets, &path_targets}); }
 };
 
 // The queries of GeodesicSolver, whatever the precision

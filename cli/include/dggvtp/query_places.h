@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <stdexcept>
 #include <type_traits>
@@ -42,6 +43,16 @@ struct Place
   std::size_t vertex = 0;       // 0-based, in the file's order
   std::array<double, 3> point{}; // located at the nearest point of the surface
 };
+
+// whether a query's places (sources, targets, path targets) need points located
+inline bool has_points(std::initializer_list<const std::vector<Place>*> places)
+{
+  for(const std::vector<Place>* range : places)
+    for(const Place& p : *range)
+      if(p.is_point)
+        return true;
+  return false;
+}
 
 // The nearest surface points to 3D points, by CGAL::Polygon_mesh_processing::locate_with_AABB_tree()
 // on a Surface_mesh of the solver's triangles (its face f is triangle f, its vertex i point i),
