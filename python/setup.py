@@ -26,10 +26,13 @@ class CMake_build(build_ext):
     def build_extension(self, extension):
         target = pathlib.Path(self.get_ext_fullpath(extension.name)).resolve()
         build = pathlib.Path(self.build_temp).resolve() / "cmake"
-        subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
-                        f"-DPython3_EXECUTABLE={sys.executable}", "-DBUILD_TESTING=OFF",
-                        "-DDGG_VTP_3_BUILD_CLI=OFF", "-DDGG_VTP_3_BUILD_EXAMPLES=OFF",
-                        "-DDGG_VTP_3_BUILD_BENCHMARKS=OFF"], check=True)
+        configure = ["cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
+                     f"-DPython3_EXECUTABLE={sys.executable}", "-DBUILD_TESTING=OFF",
+                     "-DDGG_VTP_3_BUILD_CLI=OFF", "-DDGG_VTP_3_BUILD_EXAMPLES=OFF",
+                     "-DDGG_VTP_3_BUILD_BENCHMARKS=OFF"]
+        if shutil.which("ccache"):  # a module compiled by the CMake build is not compiled again
+            configure.append("-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
+        subprocess.run(configure, check=True)
         jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL", str(os.cpu_count() or 1))
         subprocess.run(["cmake", "--build", str(build), "--target", "dggvtp_python", "-j", jobs], check=True)
         built = list((build / "python").glob("dggvtp*" + pathlib.Path(target).suffix))
