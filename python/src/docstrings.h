@@ -26,9 +26,7 @@ loader). Every computation releases the GIL: several Python threads may query on
 
 const char* const input_error = R"(Input refused by the mesh loader's input policy (a ValueError).)";
 
-const char* const read_mesh = R"(read_mesh(path) -> (V, F)
-
-Reads a mesh file (OFF, OBJ, PLY, STL) with the dggvtp command-line program's readers: the same
+const char* const read_mesh = R"(Reads a mesh file (OFF, OBJ, PLY, STL) with the dggvtp command-line program's readers: the same
 fast readers, the same checks, the same vertex order.
 
 Returns V, a float64 array (n, 3) of the file's vertices in the file's order, and F, an int64
@@ -79,9 +77,7 @@ const char* const num_faces = "Number of triangles the solver uses (after the in
 const char* const precision = "The number type of the computation: 'double' or 'float'.";
 const char* const repairs = "What the input policy changed in the mesh (orientations, split vertices), one line each.";
 
-const char* const distances = R"(distances(sources=None, *, points=None, epsilon=0.0, max_distance=inf, threads=1, return_labels=False)
-
-Geodesic distance of every vertex to the nearest source.
+const char* const distances = R"(Geodesic distance of every vertex to the nearest source.
 
 sources: a vertex index or a sequence of them; points: (k, 3) surface points (see the class).
 Returns a float64 array (num_vertices,), inf where unreachable (another component, a vertex no
@@ -94,16 +90,12 @@ Raises ValueError for an index out of range, no source, points that are not fini
 or non-finite epsilon, a negative or NaN max_distance, threads < 0.
 )";
 
-const char* const distances_from_each = R"(distances_from_each(sources, *, epsilon=0.0, max_distance=inf, threads=1)
-
-One distance field per source vertex: a float64 array (len(sources), num_vertices) whose row k
+const char* const distances_from_each = R"(One distance field per source vertex: a float64 array (len(sources), num_vertices) whose row k
 is distances(sources[k]) (as dggvtp-batch's rows, bit for bit). With threads != 1 the rows are
 shared among the threads, each row one sequential propagation.
 )";
 
-const char* const target_distances = R"(target_distances(sources=None, *, points=None, targets=None, target_points=None, epsilon=0.0, max_distance=inf, threads=1)
-
-Distances of chosen targets to the nearest source; the propagation stops once they are final
+const char* const target_distances = R"(Distances of chosen targets to the nearest source; the propagation stops once they are final
 (cheaper than a full field for near targets).
 
 targets: vertex indices; target_points: (k, 3) surface points (exact distance at the point,
@@ -111,9 +103,7 @@ not an interpolation). Returns a float64 array: the targets' distances, then the
 where unreachable. The same values as dggvtp --target / --target-point.
 )";
 
-const char* const shortest_path = R"(shortest_path(sources=None, *, points=None, target=None, target_point=None, epsilon=0.0, max_distance=inf, threads=1)
-
-The shortest path on the surface from one target (a vertex `target`, or a surface point
+const char* const shortest_path = R"(The shortest path on the surface from one target (a vertex `target`, or a surface point
 `target_point`) back to its nearest source: a float64 array (m, 3) of points, from the target to
 the source; empty (0, 3) if the target is unreachable. Its length is the target's distance. The
 same points as dggvtp --path-to / --path-to-point --paths.
