@@ -56,14 +56,15 @@ def test_the_test_sees_a_call_holding_the_gil():
     assert not counter_moves_during(lambda: sum(range(10**6)))
 
 
-@pytest.mark.parametrize("query", ["distances", "points", "labels", "from_each", "targets", "path"])
+# target_distances() is left out: with the GIL held through it (a build without its release), the
+# counter still moved once per call, so this test cannot see it there
+@pytest.mark.parametrize("query", ["distances", "points", "labels", "from_each", "path"])
 def test_gil_released(bunny, query):
     calls = {
         "distances": lambda: bunny.distances(0, epsilon=1e-4),
         "points": lambda: bunny.distances(points=[0.0, 0.1, 0.0], epsilon=1e-4),
         "labels": lambda: bunny.distances([0, 9], epsilon=1e-4, return_labels=True),
         "from_each": lambda: bunny.distances_from_each([0, 9], epsilon=1e-4),
-        "targets": lambda: bunny.target_distances(0, targets=[20000], epsilon=1e-4),
         "path": lambda: bunny.shortest_path(0, target=20000, epsilon=1e-4),
     }
     assert counter_moves_during(calls[query])
