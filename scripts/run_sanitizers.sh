@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds everything with GCC under AddressSanitizer + UndefinedBehaviorSanitizer in build-asan/
-# (RelWithDebInfo: -O2 -g, assertions off as in a release) and runs the whole test suite with CTest.
+# (RelWithDebInfo: -O2 -g, assertions off as in a release) and runs the whole test suite with CTest
+# (not the Python module: an instrumented module cannot be loaded into an uninstrumented python3).
 # usage: scripts/run_sanitizers.sh [extra ctest arguments, e.g. -R cli]
 # Any sanitizer report fails the test that triggered it (-fno-sanitize-recover=all, halt_on_error).
 set -euo pipefail
@@ -10,7 +11,7 @@ bash scripts/install_dependencies.sh
 flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=g++ \
       -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" \
-      -DDGG_VTP_3_BUILD_BENCHMARKS=OFF >/dev/null
+      -DDGG_VTP_3_BUILD_BENCHMARKS=OFF -DDGG_VTP_3_BUILD_PYTHON=OFF >/dev/null
 cmake --build build-asan -j2
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1

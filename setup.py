@@ -1,0 +1,5 @@
+"""pip install . (the repository root) builds the Python module as pip install ./python does."""
+import pathlib
+import runpy
+
+runpy.run_path(str(pathlib.Path(__file__).resolve().parent / "python" / "setup.py"))
