@@ -54,6 +54,15 @@ if(MODE STREQUAL "install")
   if(NOT _at EQUAL 0)
     message(FATAL_ERROR "DGG_VTP_3_DIR is '${_found}', not under the prefix ${_prefix}")
   endif()
+  # components, configured only: TBB gives CGAL::TBB_support, an unknown one fails
+  run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/test/DGG_VTP_3_consumer -B ${WORK_DIR}/build_tbb
+      -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCONSUMER_COMPONENTS=TBB)
+  execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR}/test/DGG_VTP_3_consumer -B ${WORK_DIR}/build_unknown
+                          -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCONSUMER_COMPONENTS=No_such_component
+                  RESULT_VARIABLE _status OUTPUT_QUIET ERROR_VARIABLE _error)
+  if(_status EQUAL 0 OR NOT _error MATCHES "unknown component No_such_component")
+    message(FATAL_ERROR "find_package(DGG_VTP_3 COMPONENTS No_such_component) did not fail as it should: ${_error}")
+  endif()
 elseif(MODE STREQUAL "subdirectory")
   # -O2 by flags, not by build type: the consumer's build type stays the one it was given (none)
   run(${_configure} -DDGG_VTP_3_SOURCE_DIR=${SOURCE_DIR} -DCMAKE_CXX_FLAGS=-O2
