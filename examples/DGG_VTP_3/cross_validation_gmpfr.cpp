@@ -50,7 +50,7 @@ std::vector<double> distances_from_first_vertex(const std::vector<Point_double>&
 
 int main(int argc, char** argv)
 {
-  const std::string filename = (argc > 1) ? argv[1] : CGAL::data_file_path("meshes/elephant.off");
+  const std::string filename = (argc > 1) ? argv[1] : DGG_VTP_3_DATA_DIR "/spot.ply";
   std::vector<Point_double> points;
   std::vector<std::vector<std::size_t>> faces;
   if(!CGAL::IO::read_polygon_soup(filename, points, faces) || points.empty())

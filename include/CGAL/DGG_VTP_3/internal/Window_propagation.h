@@ -1,10 +1,18 @@
 // Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// All rights reserved.
+//
+// This file is part of DGG_VTP_3, a package written for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Author(s): DGG-VTP for CGAL team
+// Author(s)     : DGG-VTP for CGAL team
 
 #ifndef CGAL_DGG_VTP_3_INTERNAL_WINDOW_PROPAGATION_H
 #define CGAL_DGG_VTP_3_INTERNAL_WINDOW_PROPAGATION_H
+
+#include <CGAL/license/DGG_VTP_3.h>
 
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
 #include <CGAL/DGG_VTP_3/internal/Distance_bound.h>
