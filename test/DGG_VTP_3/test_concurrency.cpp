@@ -264,6 +264,39 @@ BOOST_AUTO_TEST_CASE(surface_points_and_early_stop_are_the_same_for_any_thread_c
   }
 }
 
+// the named parameters reach every propagation: with max_distance, each field is the one of
+// compute_distances with it, bit for bit, farther vertices at +infinity (issue 31: they were dropped)
+BOOST_AUTO_TEST_CASE(each_source_honours_max_distance)
+{
+  using Mesh = Sm_d::Mesh;
+  const Mesh mesh = make_mesh<Mesh>(read_soup("pinion.ply"));
+  const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
+  const std::vector<Vertex<Mesh>> sources = spread_sources(mesh, 3);
+  for(double accuracy : {0., 1e-4})
+  {
+    const auto np = CGAL::DGG_VTP_3::parameters::max_distance(0.3).accuracy(accuracy);
+    const std::vector<Field_map<Mesh>> maps = fresh_maps(mesh, sources.size());
+    const std::vector<Field_map<Mesh>> parallel_maps = fresh_maps(mesh, sources.size());
+    solver.compute_distances_from_each_source(sources, maps, np);
+    solver.compute_distances_from_each_source<CGAL::Parallel_if_available_tag>(sources, parallel_maps, np);
+    for(std::size_t k = 0; k < sources.size(); ++k)
+    {
+      const Field_map<Mesh> single = fresh_maps(mesh, 1).front();
+      solver.compute_distances(sources[k], single, np);
+      std::size_t differences = 0, beyond = 0, within = 0;
+      for(auto v : vertices(mesh))
+      {
+        differences += !same_bits(get(maps[k], v), get(single, v)) || !same_bits(get(parallel_maps[k], v), get(single, v));
+        beyond += get(maps[k], v) == std::numeric_limits<double>::infinity();
+        within += get(maps[k], v) <= 0.3;
+      }
+      BOOST_TEST(differences == 0u, "source " << k << ", accuracy " << accuracy);
+      BOOST_TEST(beyond > 0u, "source " << k << ": no vertex beyond the maximum distance");
+      BOOST_TEST(beyond + within == num_vertices(mesh), "source " << k);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(bad_arguments_are_refused_before_any_work)
 {
   using Mesh = CGAL::Surface_mesh<Epick::Point_3>;
@@ -282,6 +315,9 @@ BOOST_AUTO_TEST_CASE(bad_arguments_are_refused_before_any_work)
   sources.pop_back();
   BOOST_CHECK_THROW(solver.compute_distances_from_each_source<CGAL::Parallel_if_available_tag>(
                       sources, fresh_maps(mesh, sources.size()), CGAL::parameters::accuracy(-1e-6)),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(solver.compute_distances_from_each_source<CGAL::Parallel_if_available_tag>(
+                      sources, maps, CGAL::DGG_VTP_3::parameters::max_distance(-1.)),
                     std::invalid_argument);
   for(const Field_map<Mesh>& map : maps)
     BOOST_TEST(get(map, sources.front()) == -1.);

@@ -279,11 +279,15 @@ public:
    * \tparam VertexDistanceMapRange a random access range of writable vertex property maps with value
    *         type `FT`, as many as sources; with `Parallel_tag` they are written at the same time,
    *         so two of them must not share their storage
-   * \param np the named parameters of `compute_distances()`
+   * \param np `accuracy` and `DGG_VTP_3::parameters::max_distance`, as for `compute_distances()`,
+   *        applied to every propagation. The named parameters whose outputs are per query
+   *        (`DGG_VTP_3::parameters::targets`, `DGG_VTP_3::parameters::target_distances`,
+   *        `DGG_VTP_3::parameters::nearest_source_map`) are refused at compile time: one output
+   *        would have to serve every source (and the nearest of one source is that source).
    * \returns what each propagation did, in the order of `sources`
    * \throws std::invalid_argument before any propagation if an element of `sources` is not a
-   *         vertex of the mesh, if the two ranges differ in size, or if the accuracy is negative or
-   *         not finite. No source: nothing is done.
+   *         vertex of the mesh, if the two ranges differ in size, if the accuracy is negative or
+   *         not finite, or if the maximum distance is negative or NaN. No source: nothing is done.
    */
   template <class ConcurrencyTag = Sequential_tag, class VertexRange, class VertexDistanceMapRange,
             class NamedParameters = parameters::Default_named_parameters>
@@ -292,18 +296,29 @@ public:
                                      const VertexDistanceMapRange& distance_maps,
                                      const NamedParameters& np = parameters::default_values()) const
   {
+    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value,
+                  "compute_distances_from_each_source() does not take the named parameter targets: "
+                  "call compute_distances() once per source instead");
+    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::target_distances_t>::value,
+                  "compute_distances_from_each_source() does not take the named parameter target_distances: "
+                  "call compute_distances() once per source instead");
+    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value,
+                  "compute_distances_from_each_source() does not take the named parameter nearest_source_map: "
+                  "each field has one source, the nearest of every vertex it reaches");
     const Computation_FT accuracy = checked_accuracy(np);
+    internal::Propagation_query<Computation_FT> options;
+    add_query_options(np, options);
     const std::vector<Index> indices = checked_indices(sources);
     if(indices.size() != static_cast<std::size_t>(std::distance(std::begin(distance_maps), std::end(distance_maps))))
       throw std::invalid_argument("one distance map per source is needed");
 
     std::vector<Propagation_statistics> statistics(indices.size());
     CGAL::for_each<Effective_tag<ConcurrencyTag>>(boost::irange(std::size_t(0), indices.size()), [&](std::size_t k) {
-      internal::Propagation_query<Computation_FT> query;
+      internal::Propagation_query<Computation_FT> query = options;
       query.vertex_sources.push_back(indices[k]);
       query.source_numbers.push_back(0);
-      statistics[k] = propagate<Sequential_tag>(query, accuracy, *(std::begin(distance_maps) + k),
-                                                parameters::default_values(), std::vector<std::pair<bool, Index>>());
+      statistics[k] = propagate<Sequential_tag>(query, accuracy, *(std::begin(distance_maps) + k), np,
+                                                std::vector<std::pair<bool, Index>>());
       return true;
     });
     return statistics;
