@@ -67,14 +67,22 @@ struct Face_index_map_of
  * of its edges, the corners around each vertex); the mesh is not read again afterwards and may be
  * destroyed.
  * Queries are `const` and keep their scratch to themselves, so one solver may serve several
- * threads at once.
+ * threads at once when `FT` is `float`, `double` or `long double`. Not with the other number
+ * types: `CORE::Expr` shares its representations between copies without locking them, and a
+ * query copies the solver's lengths into its windows; `CGAL::Gmpfr` computes at the default
+ * precision of the thread that runs the query (MPFR keeps one per thread), not at the one the
+ * solver was prepared with. With those, a solver serves one thread at a time, and the
+ * `Parallel_tag` of its queries runs on one thread.
  *
  * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, with triangle faces.
  * \tparam GeomTraits a model of `DGGVTPTraits_3`; by default the kernel of the mesh's points.
  *         Its `FT` is the number type of the results: `float`, `double`, `long double` or
  *         `CGAL::Gmpfr` (computing at its default precision), or an exact type with
  *         square roots (`CORE::Expr`: no rounding margins; an unreached vertex gets
- *         `std::numeric_limits<double>::max()`, the type having no infinity). The propagation runs in `FT`, but
+ *         `std::numeric_limits<double>::max()`, the type having no infinity). An exact type
+ *         without square roots (the `FT` of `CGAL::Exact_predicates_exact_constructions_kernel`)
+ *         is refused at compile time: use `CGAL::Exact_predicates_exact_constructions_kernel_with_sqrt`
+ *         or an inexact kernel. The propagation runs in `FT`, but
  *         at least in `double`: in float, windows that tie within rounding get trimmed in the
  *         wrong order, and the cones lost that way left vertices unreachable (float is kept for
  *         input and output).
