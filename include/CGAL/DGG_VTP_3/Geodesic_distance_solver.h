@@ -269,6 +269,37 @@ public:
   }
 
   /*!
+   * computes, for each set of vertices of `source_sets`, the geodesic distance from the nearest
+   * vertex of the set to every vertex: one propagation per set, the set being one source (as
+   * the copies of a vertex that was split to repair a mesh). Each field is handed to `row` as soon
+   * as it is done, so that many of them need not be held at once. Each is the propagation of
+   * `compute_distances_to_nearest_source()` from the set, so the distances are the same bit for
+   * bit whatever the concurrency tag and the number of threads; `compute_distances_from_each_source()`
+   * is this query with one vertex per set.
+   *
+   * \tparam ConcurrencyTag as for `compute_distances_from_each_source()`
+   * \tparam SourceSetRange a range of ranges of `vertex_descriptor`
+   * \tparam RowFunction a callable as `row(std::size_t k, const std::vector<FT>& distances,
+   *         const Propagation_statistics& statistics)`: `k` is the number of the set in
+   *         `source_sets`, `distances[i]` the distance of the vertex of index `i` (by the vertex
+   *         index map; `+infinity` if unreachable), valid during the call only. With `Parallel_tag`
+   *         it is called from several threads at once, the sets in no particular order.
+   * \param np as for `compute_distances_from_each_source()`
+   * \throws std::invalid_argument before any propagation if an element of a set is not a vertex
+   *         of the mesh, if a set is empty, if the accuracy is negative or not finite, or if the
+   *         maximum distance is negative or NaN. No set: nothing is done. An exception thrown by
+   *         `row` ends the query and is rethrown (with `Parallel_tag`, once the propagations
+   *         under way are done).
+   */
+  template <class ConcurrencyTag = Sequential_tag, class SourceSetRange, class RowFunction,
+            class NamedParameters = parameters::Default_named_parameters>
+  void compute_distances_from_each_source_set(const SourceSetRange& source_sets, const RowFunction& row,
+                                              const NamedParameters& np = parameters::default_values()) const
+  {
+    m_core.template distances_from_each_source_set<ConcurrencyTag>(source_sets, row, np);
+  }
+
+  /*!
    * computes the distances from `sources` as `compute_distances_to_nearest_source()` does, and
    * keeps what tracing the shortest paths back needs (per vertex about 40 bytes more than the
    * distance): the paths to every vertex and to the point `targets` (named parameter) can then be

@@ -122,6 +122,16 @@ public:
     return m_core.template distances_from_each_source<ConcurrencyTag>(sources, distance_maps, np);
   }
 
+  /// as `Geodesic_distance_solver::compute_distances_from_each_source_set()`, `distances[i]`
+  /// being the distance of point `i`
+  template <class ConcurrencyTag = Sequential_tag, class SourceSetRange, class RowFunction,
+            class NamedParameters = parameters::Default_named_parameters>
+  void compute_distances_from_each_source_set(const SourceSetRange& source_sets, const RowFunction& row,
+                                              const NamedParameters& np = parameters::default_values()) const
+  {
+    m_core.template distances_from_each_source_set<ConcurrencyTag>(source_sets, row, np);
+  }
+
   /// as `Geodesic_distance_solver::compute_shortest_path_tree()`
   template <class ConcurrencyTag = Sequential_tag, class SourceRange,
             class NamedParameters = parameters::Default_named_parameters>
