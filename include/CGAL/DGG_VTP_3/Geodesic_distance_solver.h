@@ -31,7 +31,7 @@ namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
 
-// the default index maps, looked up only when no map type is given (a triangle soup has none)
+// the default index maps, looked up only when no map type is given
 template <class TriangleMesh>
 struct Vertex_index_map_of
 {
