@@ -644,10 +644,15 @@ void finish_checkpoint(const Checkpoint& checkpoint, const std::string& output)
 // computes the row of one source: the file vertices' distances, as dggvtp prints them; with
 // `parallel`, the propagation runs on the threads (same bits)
 using Row_function = std::function<std::vector<double>(std::size_t file_vertex, bool parallel)>;
+// computes the rows of several sources, each one sequential propagation, on `threads` threads (0 =
+// all cores), and hands each to `done` (from any thread) with its number in `file_vertices`
+using Rows_function = std::function<void(const std::vector<std::size_t>& file_vertices, long threads,
+                                         const std::function<void(std::size_t, const std::vector<double>&)>& done)>;
 
 struct Prepared
 {
   Row_function row;
+  Rows_function rows;
   std::size_t faces = 0;
   double seconds_make_mesh = 0., seconds_prepare = 0.;
 };
@@ -680,6 +685,36 @@ Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon)
       (*solver)->template compute_distances_to_nearest_source<CGAL::Sequential_tag>(
         sources, CGAL::make_property_map(d), CGAL::parameters::accuracy(epsilon));
     return dggvtp::file_vertex_distances(*soup, d);
+  };
+  prepared.rows = [soup, solver, epsilon](const std::vector<std::size_t>& file_vertices, long threads,
+                                          const std::function<void(std::size_t, const std::vector<double>&)>& done) {
+    // the copies of each file vertex, in one pass over the solver's vertices
+    std::vector<std::size_t> row_of(soup->file_vertices, file_vertices.size());
+    for(std::size_t k = 0; k < file_vertices.size(); ++k)
+      row_of[file_vertices[k]] = k;
+    std::vector<std::vector<std::size_t>> sets(file_vertices.size());
+    for(std::size_t i = 0; i < soup->file_vertex_of.size(); ++i)
+      if(row_of[soup->file_vertex_of[i]] < file_vertices.size())
+        sets[row_of[soup->file_vertex_of[i]]].push_back(i);
+    const auto row = [&](std::size_t k, const std::vector<typename Solver::FT>& d,
+                         const CGAL::DGG_VTP_3::Propagation_statistics&) {
+      done(k, dggvtp::file_vertex_distances(*soup, d));
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(threads != 1 && file_vertices.size() > 1)
+    {
+      std::optional<tbb::global_control> limit;
+      if(threads > 0)
+        limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+      (*solver)->template compute_distances_from_each_source_set<CGAL::Parallel_tag>(
+        sets, row, CGAL::parameters::accuracy(epsilon));
+      return;
+    }
+#else
+    (void)threads;
+#endif
+    (*solver)->template compute_distances_from_each_source_set<CGAL::Sequential_tag>(
+      sets, row, CGAL::parameters::accuracy(epsilon));
   };
   return prepared;
 }
@@ -764,42 +799,6 @@ private:
   std::size_t m_written = 0;               // rows written by this process
   Clock::time_point m_last_sync;
 };
-
-// Runs `work(i)` for i in [0, n) on `threads` threads (0 = all cores), in order of i as threads
-// become free; the first exception stops the others after their current item and is rethrown.
-void for_each_row(std::size_t n, long threads, const std::function<void(std::size_t)>& work)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(threads != 1 && n > 1)
-  {
-    std::optional<tbb::global_control> limit;
-    if(threads > 0)
-      limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-    const int workers = threads > 0 ? int(threads) : tbb::this_task_arena::max_concurrency();
-    std::atomic<std::size_t> next(0);
-    std::atomic<bool> failed(false);
-    tbb::parallel_for(0, workers, [&](int) {
-      for(std::size_t i; !failed && (i = next++) < n;)
-      {
-        try
-        {
-          work(i);
-        }
-        catch(...)
-        {
-          failed = true;
-          throw;
-        }
-      }
-    });
-    return;
-  }
-#else
-  (void)threads;
-#endif
-  for(std::size_t i = 0; i < n; ++i)
-    work(i);
-}
 
 // =============================================================================================
 // Progress
@@ -1126,9 +1125,12 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
             return n;
           },
           sources.rows, already_done);
-      for_each_row(mine.size(), threads, [&](std::size_t i) {
+      std::vector<std::size_t> file_vertices;
+      for(std::size_t r : mine)
+        file_vertices.push_back(sources.vertices[r]);
+      one.prepared.rows(file_vertices, threads, [&](std::size_t i, const std::vector<double>& row) {
         thread_local std::vector<char> bytes;
-        encode_row(one.prepared.row(sources.vertices[mine[i]], false), options.dtype, bytes);
+        encode_row(row, options.dtype, bytes);
         sink.write(mine[i], bytes);
       });
       sink.flush();

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstring>
+#include <stdexcept>
 #include <iterator>
 #include <type_traits>
 
@@ -264,6 +265,172 @@ BOOST_AUTO_TEST_CASE(surface_points_and_early_stop_are_the_same_for_any_thread_c
   }
 }
 
+// the named parameters reach every propagation: with max_distance, each field is the one of
+// compute_distances with it, bit for bit, farther vertices at +infinity (issue 31: they were dropped)
+BOOST_AUTO_TEST_CASE(each_source_honours_max_distance)
+{
+  using Mesh = Sm_d::Mesh;
+  const Mesh mesh = make_mesh<Mesh>(read_soup("pinion.ply"));
+  const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
+  const std::vector<Vertex<Mesh>> sources = spread_sources(mesh, 3);
+  for(double accuracy : {0., 1e-4})
+  {
+    const auto np = CGAL::DGG_VTP_3::parameters::max_distance(0.3).accuracy(accuracy);
+    const std::vector<Field_map<Mesh>> maps = fresh_maps(mesh, sources.size());
+    const std::vector<Field_map<Mesh>> parallel_maps = fresh_maps(mesh, sources.size());
+    solver.compute_distances_from_each_source(sources, maps, np);
+    solver.compute_distances_from_each_source<CGAL::Parallel_if_available_tag>(sources, parallel_maps, np);
+    for(std::size_t k = 0; k < sources.size(); ++k)
+    {
+      const Field_map<Mesh> single = fresh_maps(mesh, 1).front();
+      solver.compute_distances(sources[k], single, np);
+      std::size_t differences = 0, beyond = 0, within = 0;
+      for(auto v : vertices(mesh))
+      {
+        differences += !same_bits(get(maps[k], v), get(single, v)) || !same_bits(get(parallel_maps[k], v), get(single, v));
+        beyond += get(maps[k], v) == std::numeric_limits<double>::infinity();
+        within += get(maps[k], v) <= 0.3;
+      }
+      BOOST_TEST(differences == 0u, "source " << k << ", accuracy " << accuracy);
+      BOOST_TEST(beyond > 0u, "source " << k << ": no vertex beyond the maximum distance");
+      BOOST_TEST(beyond + within == num_vertices(mesh), "source " << k);
+    }
+  }
+}
+
+// compute_distances_from_each_source_set: row k is, bit for bit, the field of
+// compute_distances_to_nearest_source from set k (a set of several vertices is one source), with
+// its statistics, each row handed over once, whatever the tag and the number of threads; in
+// float and double, on the mesh solver and the soup solver
+template <class Solver, class Vertex, class Check>
+void check_source_sets(const Solver& solver, const std::vector<std::vector<Vertex>>& sets, double accuracy,
+                       const Check& check_row, const std::string& what)
+{
+  using FT = typename Solver::FT;
+  std::vector<std::vector<FT>> rows(sets.size());
+  std::vector<CGAL::DGG_VTP_3::Propagation_statistics> statistics(sets.size());
+  std::vector<int> calls(sets.size(), 0);
+#ifdef CGAL_LINKED_WITH_TBB
+  const int runs = 4; // sequential, then 1, 2 and 4 threads
+#else
+  const int runs = 1;
+#endif
+  const auto row = [&](std::size_t k, const std::vector<FT>& d, const CGAL::DGG_VTP_3::Propagation_statistics& s) {
+    rows.at(k) = d;
+    statistics.at(k) = s;
+    ++calls.at(k); // each k from one thread only
+  };
+  const auto np = CGAL::parameters::accuracy(accuracy);
+  solver.compute_distances_from_each_source_set(sets, row, np);
+  for(std::size_t k = 0; k < sets.size(); ++k)
+    check_row(sets[k], rows[k], statistics[k], what + ", sequential, set " + std::to_string(k));
+#ifdef CGAL_LINKED_WITH_TBB
+  for(int threads : {1, 2, 4})
+  {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    solver.template compute_distances_from_each_source_set<CGAL::Parallel_tag>(sets, row, np);
+    for(std::size_t k = 0; k < sets.size(); ++k)
+      check_row(sets[k], rows[k], statistics[k], what + ", " + std::to_string(threads) + " threads, set " + std::to_string(k));
+  }
+#endif
+  for(std::size_t k = 0; k < sets.size(); ++k)
+    BOOST_TEST(calls[k] == runs, what << ", set " << k);
+}
+
+template <class Kernel>
+void check_source_sets_on(const std::string& name)
+{
+  using FT = typename Kernel::FT;
+  using Mesh = CGAL::Surface_mesh<typename Kernel::Point_3>;
+  const Soup soup = read_soup(name);
+  const Mesh mesh = make_mesh<Mesh>(soup);
+  const std::vector<Vertex<Mesh>> all = vertex_list(mesh);
+  const std::size_t n = all.size();
+  const std::vector<std::vector<std::size_t>> index_sets{{0}, {n / 3, 2 * n / 3}, {n / 5, n / 2, n - 1}, {7}};
+  for(double accuracy : {0., 1e-4})
+  {
+    const std::string what = name + ", accuracy " + std::to_string(accuracy);
+    // the mesh solver: sets of vertex descriptors, rows indexed by the vertex index map
+    const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
+    std::vector<std::vector<Vertex<Mesh>>> sets;
+    for(const auto& set : index_sets)
+    {
+      sets.emplace_back();
+      for(std::size_t i : set)
+        sets.back().push_back(all[i]);
+    }
+    check_source_sets(solver, sets, accuracy,
+      [&](const std::vector<Vertex<Mesh>>& set, const std::vector<FT>& row,
+          const CGAL::DGG_VTP_3::Propagation_statistics& statistics, const std::string& context) {
+        std::vector<FT> expected(n);
+        const auto s = solver.compute_distances_to_nearest_source(set, CGAL::make_property_map(expected),
+                                                                  CGAL::parameters::accuracy(accuracy));
+        BOOST_REQUIRE_EQUAL(row.size(), n);
+        std::size_t differences = 0;
+        for(std::size_t i = 0; i < n; ++i)
+          differences += !same_bits(row[get(CGAL::get(CGAL::vertex_index, mesh), all[i])], expected[i]);
+        BOOST_TEST(differences == 0u, context << ": " << differences << " distances differ");
+        BOOST_TEST(statistics.windows_created == s.windows_created, context);
+        BOOST_TEST(statistics.vertices_popped == s.vertices_popped, context);
+      },
+      what + ", Surface_mesh");
+    // the soup solver: sets of point indices
+    std::vector<typename Kernel::Point_3> points;
+    for(const auto& p : soup.points)
+      points.emplace_back(FT(p[0]), FT(p[1]), FT(p[2]));
+    const CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Kernel> soup_solver(points, soup.faces);
+    check_source_sets(soup_solver, index_sets, accuracy,
+      [&](const std::vector<std::size_t>& set, const std::vector<FT>& row,
+          const CGAL::DGG_VTP_3::Propagation_statistics& statistics, const std::string& context) {
+        std::vector<FT> expected(n);
+        const auto s = soup_solver.compute_distances_to_nearest_source(set, CGAL::make_property_map(expected),
+                                                                       CGAL::parameters::accuracy(accuracy));
+        std::size_t differences = 0;
+        for(std::size_t i = 0; i < n; ++i)
+          differences += !same_bits(row.at(i), expected[i]);
+        BOOST_TEST(differences == 0u, context << ": " << differences << " distances differ");
+        BOOST_TEST(statistics.windows_created == s.windows_created, context);
+      },
+      what + ", soup");
+  }
+}
+
+BOOST_AUTO_TEST_CASE(each_source_set_equals_nearest_source_queries)
+{
+  check_source_sets_on<Epick>("lion_head.ply");
+  check_source_sets_on<Sc_float>("pinion.ply");
+}
+
+// source sets: bad sets are refused before the first row; an exception of the row function ends
+// the query and reaches the caller
+BOOST_AUTO_TEST_CASE(each_source_set_errors)
+{
+  using Mesh = Sm_d::Mesh;
+  const Mesh mesh = make_mesh<Mesh>(read_soup("pinion.ply"));
+  const CGAL::DGG_VTP_3::Geodesic_distance_solver<Mesh> solver(mesh);
+  const std::vector<Vertex<Mesh>> all = vertex_list(mesh);
+  std::size_t rows = 0;
+  const auto count = [&](std::size_t, const std::vector<double>&, const CGAL::DGG_VTP_3::Propagation_statistics&) {
+    ++rows;
+  };
+  const std::vector<std::vector<Vertex<Mesh>>> with_empty{{all[0]}, {}};
+  BOOST_CHECK_THROW(solver.compute_distances_from_each_source_set(with_empty, count), std::invalid_argument);
+  const std::vector<std::vector<Vertex<Mesh>>> with_stranger{
+    {all[0]}, {all[1], Mesh::Vertex_index(static_cast<Mesh::size_type>(all.size() + 3))}};
+  BOOST_CHECK_THROW(solver.compute_distances_from_each_source_set(with_stranger, count), std::invalid_argument);
+  const std::vector<std::vector<Vertex<Mesh>>> good{{all[0]}, {all[1]}};
+  BOOST_CHECK_THROW(solver.compute_distances_from_each_source_set(good, count, CGAL::parameters::accuracy(-1.)),
+                    std::invalid_argument);
+  BOOST_TEST(rows == 0u);
+  const auto failing = [](std::size_t, const std::vector<double>&, const CGAL::DGG_VTP_3::Propagation_statistics&) {
+    throw std::runtime_error("row refused");
+  };
+  BOOST_CHECK_THROW(solver.compute_distances_from_each_source_set<CGAL::Parallel_if_available_tag>(good, failing),
+                    std::runtime_error);
+  solver.compute_distances_from_each_source_set(std::vector<std::vector<Vertex<Mesh>>>(), count);
+  BOOST_TEST(rows == 0u);
+}
+
 BOOST_AUTO_TEST_CASE(bad_arguments_are_refused_before_any_work)
 {
   using Mesh = CGAL::Surface_mesh<Epick::Point_3>;
@@ -282,6 +449,9 @@ BOOST_AUTO_TEST_CASE(bad_arguments_are_refused_before_any_work)
   sources.pop_back();
   BOOST_CHECK_THROW(solver.compute_distances_from_each_source<CGAL::Parallel_if_available_tag>(
                       sources, fresh_maps(mesh, sources.size()), CGAL::parameters::accuracy(-1e-6)),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(solver.compute_distances_from_each_source<CGAL::Parallel_if_available_tag>(
+                      sources, maps, CGAL::DGG_VTP_3::parameters::max_distance(-1.)),
                     std::invalid_argument);
   for(const Field_map<Mesh>& map : maps)
     BOOST_TEST(get(map, sources.front()) == -1.);

@@ -17,40 +17,29 @@
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
 #include <CGAL/DGG_VTP_3/Shortest_path_tree.h>
 #include <CGAL/DGG_VTP_3/parameters.h>
-#include <CGAL/DGG_VTP_3/internal/Effective_concurrency_tag.h>
-#include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
-#include <CGAL/DGG_VTP_3/internal/Query_builder.h>
-#include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
-#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
+#include <CGAL/DGG_VTP_3/internal/Element_numbering.h>
+#include <CGAL/DGG_VTP_3/internal/Solver_core.h>
 #include <CGAL/DGG_VTP_3/internal/unfold_input.h>
-#include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/for_each.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/property_map.h>
 #include <CGAL/tags.h>
 
 #include <boost/graph/graph_traits.hpp>
-#include <boost/range/irange.hpp>
 
 #include <array>
-#include <cmath>
-#include <limits>
+#include <cstdint>
 #include <utility>
-#include <iterator>
-#include <stdexcept>
-#include <string>
-#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
 
-// the default index maps, looked up only when no map type is given (a triangle soup has none)
+// the default index maps, looked up only when no map type is given
 template <class TriangleMesh>
 struct Vertex_index_map_of
 {
@@ -75,14 +64,22 @@ struct Face_index_map_of
  * of its edges, the corners around each vertex); the mesh is not read again afterwards and may be
  * destroyed.
  * Queries are `const` and keep their scratch to themselves, so one solver may serve several
- * threads at once.
+ * threads at once when `FT` is `float`, `double` or `long double`. Not with the other number
+ * types: `CORE::Expr` shares its representations between copies without locking them, and a
+ * query copies the solver's lengths into its windows; `CGAL::Gmpfr` computes at the default
+ * precision of the thread that runs the query (MPFR keeps one per thread), not at the one the
+ * solver was prepared with. With those, a solver serves one thread at a time, and the
+ * `Parallel_tag` of its queries runs on one thread.
  *
  * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, with triangle faces.
  * \tparam GeomTraits a model of `DGGVTPTraits_3`; by default the kernel of the mesh's points.
  *         Its `FT` is the number type of the results: `float`, `double`, `long double` or
  *         `CGAL::Gmpfr` (computing at its default precision), or an exact type with
  *         square roots (`CORE::Expr`: no rounding margins; an unreached vertex gets
- *         `std::numeric_limits<double>::max()`, the type having no infinity). The propagation runs in `FT`, but
+ *         `std::numeric_limits<double>::max()`, the type having no infinity). An exact type
+ *         without square roots (the `FT` of `CGAL::Exact_predicates_exact_constructions_kernel`)
+ *         is refused at compile time: use `CGAL::Exact_predicates_exact_constructions_kernel_with_sqrt`
+ *         or an inexact kernel. The propagation runs in `FT`, but
  *         at least in `double`: in float, windows that tie within rounding get trimmed in the
  *         wrong order, and the cones lost that way left vertices unreachable (float is kept for
  *         input and output).
@@ -112,12 +109,6 @@ public:
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   /// a point of the surface, the type of `CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, FT>`
   using Face_location = std::pair<face_descriptor, std::array<FT, 3>>;
-
-protected:
-  using Computation_FT = typename std::conditional<std::is_same<FT, float>::value, double, FT>::type;
-  using Mesh = internal::Unfolded_mesh<Computation_FT>;
-
-public:
 
   /*!
    * prepares the mesh for distance queries.
@@ -164,24 +155,8 @@ public:
   template <class NamedParameters = parameters::Default_named_parameters>
   explicit Geodesic_distance_solver(const TriangleMesh& tm,
                                     const NamedParameters& np = parameters::default_values())
-    : m_vim(get_initialized_vertex_index_map(tm, np))
-    , m_fim(get_initialized_face_index_map(tm, np))
-  {
-    const std::vector<Index> order = internal::unfold_triangle_mesh(
-      tm,
-      parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
-                                   get_const_property_map(CGAL::vertex_point, tm)),
-      m_vim, m_fim,
-      parameters::choose_parameter<Traits>(parameters::get_parameter(np, internal_np::geom_traits)),
-      m_mesh);
-    m_vertices.resize(m_mesh.number_of_vertices());
-    for(vertex_descriptor v : vertices(tm))
-      m_vertices[static_cast<std::size_t>(get(m_vim, v))] = v;
-    m_faces.resize(m_mesh.number_of_faces());
-    for(face_descriptor f : faces(tm))
-      m_faces[static_cast<std::size_t>(get(m_fim, f))] = f;
-    index_faces(order);
-  }
+    : m_core(prepare(tm, np))
+  {}
 
   /*!
    * computes the geodesic distance from `source_vertex` to every vertex and writes it into
@@ -264,13 +239,7 @@ public:
                                                              VertexDistanceMap distances,
                                                              const NamedParameters& np = parameters::default_values()) const
   {
-    const Computation_FT accuracy = checked_accuracy(np);
-    internal::Propagation_query<Computation_FT> query;
-    builder().add_sources(sources, query);
-    if(query.vertex_sources.empty() && query.point_sources.empty())
-      throw std::invalid_argument("no source given");
-    const auto targets = add_query_options(np, query);
-    return propagate<ConcurrencyTag>(query, accuracy, distances, np, targets);
+    return m_core.template distances_to_nearest_source<ConcurrencyTag>(sources, distances, np);
   }
 
   /*!
@@ -287,10 +256,15 @@ public:
    * \tparam VertexDistanceMapRange a random access range of writable vertex property maps with value
    *         type `FT`, as many as sources; with `Parallel_tag` they are written at the same time,
    *         so two of them must not share their storage
-   * \param np the named parameters of `compute_distances()`
+   * \param np `accuracy` and `DGG_VTP_3::parameters::max_distance`, as for `compute_distances()`,
+   *        applied to every propagation. The named parameters whose outputs are per query
+   *        (`DGG_VTP_3::parameters::targets`, `DGG_VTP_3::parameters::target_distances`,
+   *        `DGG_VTP_3::parameters::nearest_source_map`) are refused at compile time: one output
+   *        would have to serve every source (and the nearest of one source is that source).
    * \returns what each propagation did, in the order of `sources`
    * \throws std::invalid_argument before any propagation if an element of `sources` is not a
-   *         vertex of the mesh, if the two ranges differ in size, or if the accuracy is not in [0, 1]. No source: nothing is done.
+   *         vertex of the mesh, if the two ranges differ in size, if the accuracy is not in [0, 1],
+   *         or if the maximum distance is negative or NaN. No source: nothing is done.
    */
   template <class ConcurrencyTag = Sequential_tag, class VertexRange, class VertexDistanceMapRange,
             class NamedParameters = parameters::Default_named_parameters>
@@ -299,26 +273,43 @@ public:
                                      const VertexDistanceMapRange& distance_maps,
                                      const NamedParameters& np = parameters::default_values()) const
   {
-    const Computation_FT accuracy = checked_accuracy(np);
-    const std::vector<Index> indices = checked_indices(sources);
-    if(indices.size() != static_cast<std::size_t>(std::distance(std::begin(distance_maps), std::end(distance_maps))))
-      throw std::invalid_argument("one distance map per source is needed");
+    return m_core.template distances_from_each_source<ConcurrencyTag>(sources, distance_maps, np);
+  }
 
-    std::vector<Propagation_statistics> statistics(indices.size());
-    CGAL::for_each<Effective_tag<ConcurrencyTag>>(boost::irange(std::size_t(0), indices.size()), [&](std::size_t k) {
-      internal::Propagation_query<Computation_FT> query;
-      query.vertex_sources.push_back(indices[k]);
-      query.source_numbers.push_back(0);
-      statistics[k] = propagate<Sequential_tag>(query, accuracy, *(std::begin(distance_maps) + k),
-                                                parameters::default_values(), std::vector<std::pair<bool, Index>>());
-      return true;
-    });
-    return statistics;
+  /*!
+   * computes, for each set of vertices of `source_sets`, the geodesic distance from the nearest
+   * vertex of the set to every vertex: one propagation per set, the set being one source (as
+   * the copies of a vertex that was split to repair a mesh). Each field is handed to `row` as soon
+   * as it is done, so that many of them need not be held at once. Each is the propagation of
+   * `compute_distances_to_nearest_source()` from the set, so the distances are the same bit for
+   * bit whatever the concurrency tag and the number of threads; `compute_distances_from_each_source()`
+   * is this query with one vertex per set.
+   *
+   * \tparam ConcurrencyTag as for `compute_distances_from_each_source()`
+   * \tparam SourceSetRange a range of ranges of `vertex_descriptor`
+   * \tparam RowFunction a callable as `row(std::size_t k, const std::vector<FT>& distances,
+   *         const Propagation_statistics& statistics)`: `k` is the number of the set in
+   *         `source_sets`, `distances[i]` the distance of the vertex of index `i` (by the vertex
+   *         index map; `+infinity` if unreachable), valid during the call only. With `Parallel_tag`
+   *         it is called from several threads at once, the sets in no particular order.
+   * \param np as for `compute_distances_from_each_source()`
+   * \throws std::invalid_argument before any propagation if an element of a set is not a vertex
+   *         of the mesh, if a set is empty, if the accuracy is not in [0, 1], or if the
+   *         maximum distance is negative or NaN. No set: nothing is done. An exception thrown by
+   *         `row` ends the query and is rethrown (with `Parallel_tag`, once the propagations
+   *         under way are done).
+   */
+  template <class ConcurrencyTag = Sequential_tag, class SourceSetRange, class RowFunction,
+            class NamedParameters = parameters::Default_named_parameters>
+  void compute_distances_from_each_source_set(const SourceSetRange& source_sets, const RowFunction& row,
+                                              const NamedParameters& np = parameters::default_values()) const
+  {
+    m_core.template distances_from_each_source_set<ConcurrencyTag>(source_sets, row, np);
   }
 
   /*!
    * computes the distances from `sources` as `compute_distances_to_nearest_source()` does, and
-   * keeps what tracing the shortest paths back needs (per vertex about 32 bytes more than the
+   * keeps what tracing the shortest paths back needs (per vertex about 40 bytes more than the
    * distance): the paths to every vertex and to the point `targets` (named parameter) can then be
    * traced. With DGG-VTP, a path goes through the pseudo-source vertices that produced the
    * distance, and its length is the distance reported.
@@ -332,176 +323,40 @@ public:
   Shortest_path_tree<Geodesic_distance_solver>
   compute_shortest_path_tree(const SourceRange& sources, const NamedParameters& np = parameters::default_values()) const
   {
-    const Computation_FT accuracy = checked_accuracy(np);
-    internal::Propagation_query<Computation_FT> query;
-    builder().add_sources(sources, query);
-    if(query.vertex_sources.empty() && query.point_sources.empty())
-      throw std::invalid_argument("no source given");
-    const auto targets = add_query_options(np, query);
-    query.record_origins = query.record_arrivals = true;
-    internal::Window_propagation<Computation_FT> propagation(m_mesh, m_partition, accuracy);
-    propagation.template run<Effective_tag<ConcurrencyTag>>(query);
-    return Shortest_path_tree<Geodesic_distance_solver>(*this, propagation, query, targets);
+    return m_core.template shortest_path_tree<ConcurrencyTag>(
+      sources, np, [this](auto& propagation, const auto& query, const auto& targets) {
+        return Shortest_path_tree<Geodesic_distance_solver>(m_core, propagation, query, targets);
+      });
   }
 
-  std::size_t number_of_vertices() const { return m_vertices.size(); }
+  std::size_t number_of_vertices() const { return m_core.number_of_vertices(); }
 
   /// the number of vertices where several fans of faces meet; they are kept as they are, and
   /// shortest paths may go from one fan to another through them
-  std::size_t number_of_non_manifold_vertices() const { return m_mesh.number_of_non_manifold_vertices(); }
-
-protected:
-  // for a solver whose vertices and faces are numbers, 0 to n-1, given the unfolded mesh
-  // and the order of its faces (see internal::unfold_triangles())
-  Geodesic_distance_solver(Mesh&& mesh, const std::vector<std::uint32_t>& order)
-    : m_mesh(std::move(mesh))
-  {
-    m_vertices.resize(m_mesh.number_of_vertices());
-    for(std::size_t i = 0; i < m_vertices.size(); ++i)
-      m_vertices[i] = vertex_descriptor(i);
-    m_faces.resize(m_mesh.number_of_faces());
-    for(std::size_t i = 0; i < m_faces.size(); ++i)
-      m_faces[i] = face_descriptor(i);
-    index_faces(order);
-  }
+  std::size_t number_of_non_manifold_vertices() const { return m_core.number_of_non_manifold_vertices(); }
 
 private:
   friend class Shortest_path_tree<Geodesic_distance_solver>;
-
-
-  using Index = typename Mesh::Index;
-
-  void index_faces(const std::vector<Index>& order)
-  {
-    m_partition = internal::Patch_partition<Computation_FT>(m_mesh);
-    m_internal_face.resize(order.size());
-    for(std::size_t f = 0; f < order.size(); ++f)
-      m_internal_face[order[f]] = Index(f);
-    m_user_face = order;
-  }
-
-  Index checked_vertex(vertex_descriptor v) const
-  {
-    const std::size_t i = static_cast<std::size_t>(get(m_vim, v));
-    if(i >= m_vertices.size() || m_vertices[i] != v)
-      throw std::invalid_argument("not a vertex of the mesh");
-    return Index(i);
-  }
+  using Numbering = internal::Mesh_numbering<TriangleMesh, Vertex_index_map, Face_index_map>;
+  using Core = internal::Solver_core<Numbering, FT>;
 
   template <class NamedParameters>
-  static Computation_FT checked_accuracy(const NamedParameters& np)
+  static Core prepare(const TriangleMesh& tm, const NamedParameters& np)
   {
-    const double accuracy = parameters::choose_parameter(parameters::get_parameter(np, internal_np::accuracy), 0.);
-    if(!(accuracy >= 0. && accuracy <= maximal_accuracy))
-      throw std::invalid_argument("the accuracy must be a number in [0, 1] (0: exact); got " + std::to_string(accuracy));
-    return internal::number<Computation_FT>(accuracy);
+    const Vertex_index_map vim = get_initialized_vertex_index_map(tm, np);
+    const Face_index_map fim = get_initialized_face_index_map(tm, np);
+    typename Core::Mesh mesh;
+    const std::vector<std::uint32_t> order = internal::unfold_triangle_mesh(
+      tm,
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm)),
+      vim, fim,
+      parameters::choose_parameter<Traits>(parameters::get_parameter(np, internal_np::geom_traits)),
+      mesh);
+    return Core(Numbering(tm, vim, fim), std::move(mesh), order);
   }
 
-  template <class VertexRange>
-  std::vector<Index> checked_indices(const VertexRange& sources) const
-  {
-    std::vector<Index> indices;
-    for(vertex_descriptor v : sources)
-    {
-      const std::size_t i = static_cast<std::size_t>(get(m_vim, v));
-      if(i >= m_vertices.size() || m_vertices[i] != v)
-        throw std::invalid_argument("the source is not a vertex of the mesh");
-      indices.push_back(static_cast<Index>(i));
-    }
-    return indices;
-  }
-
-  template <class ConcurrencyTag>
-  using Effective_tag = typename internal::Effective_concurrency_tag<ConcurrencyTag, Computation_FT>::type;
-
-  using Builder = internal::Query_builder<TriangleMesh, Vertex_index_map, Face_index_map, Mesh, Computation_FT>;
-  Builder builder() const { return Builder(m_vim, m_vertices, m_fim, m_faces, m_internal_face, m_mesh); }
-
-  // the early termination of the named parameters; returns where each target is
-  template <class NamedParameters>
-  std::vector<std::pair<bool, Index>> add_query_options(const NamedParameters& np,
-                                                        internal::Propagation_query<Computation_FT>& query) const
-  {
-    const double max_distance = parameters::choose_parameter(
-      parameters::get_parameter(np, internal_np::max_distance_t()), std::numeric_limits<double>::infinity());
-    if(!(max_distance >= 0.))
-      throw std::invalid_argument("the maximum distance must be a number >= 0");
-    query.max_distance = max_distance < std::numeric_limits<double>::infinity()
-                           ? internal::number<Computation_FT>(max_distance)
-                           : internal::Number_type_math<Computation_FT>::infinity();
-    query.record_origins =
-      !parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value;
-    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value)
-      return builder().add_targets(parameters::get_parameter(np, internal_np::targets_t()), query);
-    else
-      return std::vector<std::pair<bool, Index>>();
-  }
-
-  template <class ConcurrencyTag, class VertexDistanceMap, class NamedParameters>
-  Propagation_statistics propagate(const internal::Propagation_query<Computation_FT>& query, Computation_FT accuracy,
-                                   VertexDistanceMap distances, const NamedParameters& np,
-                                   const std::vector<std::pair<bool, Index>>& targets) const
-  {
-    internal::Window_propagation<Computation_FT> propagation(m_mesh, m_partition, accuracy);
-    propagation.template run<Effective_tag<ConcurrencyTag>>(query);
-    const std::vector<Computation_FT>& d = propagation.distances();
-    for(std::size_t i = 0; i < m_vertices.size(); ++i)
-      put(distances, m_vertices[i], FT(d[i]));
-    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::target_distances_t>::value)
-    {
-      auto out = parameters::get_parameter(np, internal_np::target_distances_t());
-      const std::vector<Computation_FT> at_points = propagation.point_targets().distances();
-      for(const auto& t : targets)
-      {
-        const Computation_FT dt = t.first ? d[t.second] : at_points[t.second];
-        *out++ = FT(dt > query.max_distance ? internal::Number_type_math<Computation_FT>::infinity() : dt);
-      }
-    }
-    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value)
-    {
-      auto labels = parameters::get_parameter(np, internal_np::nearest_source_map_t());
-      const std::vector<std::size_t> nearest = nearest_sources(propagation.origins());
-      for(std::size_t i = 0; i < m_vertices.size(); ++i)
-        put(labels, m_vertices[i], d[i] < internal::Number_type_math<Computation_FT>::infinity() ? nearest[i] : std::size_t(-1));
-    }
-    return propagation.statistics();
-  }
-
-  // Per vertex, the number of the source its path starts from: the pseudo-source of its path is a
-  // source, or a vertex whose own path starts from a source, and so on.
-  static std::vector<std::size_t> nearest_sources(const std::vector<Index>& origin)
-  {
-    const Index nv = Index(origin.size());
-    const std::size_t unknown = std::size_t(-2), none = std::size_t(-1);
-    std::vector<std::size_t> nearest(nv, unknown);
-    std::vector<Index> chain;
-    for(Index v = 0; v < nv; ++v)
-    {
-      Index u = v;
-      while(u < nv && nearest[u] == unknown)
-      {
-        chain.push_back(u);
-        nearest[u] = none; // a cycle (rounding could make one) ends here, unlabelled
-        u = origin[u];
-      }
-      const std::size_t label = u < nv ? nearest[u]
-                              : u == internal::Window_propagation<Computation_FT>::no_origin() ? none
-                              : std::size_t(u - nv);
-      for(Index c : chain)
-        nearest[c] = label;
-      chain.clear();
-    }
-    return nearest;
-  }
-
-  Vertex_index_map m_vim;                    // user's vertex -> internal index
-  Face_index_map m_fim;                      // user's face -> user's face index
-  Mesh m_mesh;                               // intrinsic geometry and combinatorics
-  internal::Patch_partition<Computation_FT> m_partition; // the faces cut into patches for the propagation's rounds
-  std::vector<vertex_descriptor> m_vertices; // internal index -> user's vertex
-  std::vector<face_descriptor> m_faces;      // user's face index -> user's face
-  std::vector<Index> m_internal_face;        // user's face index -> internal face
-  std::vector<Index> m_user_face;            // internal face -> user's face index
+  Core m_core; // the prepared mesh and the queries, on the numbers of the index maps
 };
 
 } // namespace DGG_VTP_3

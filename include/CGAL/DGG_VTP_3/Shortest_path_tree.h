@@ -19,6 +19,7 @@
 #include <CGAL/DGG_VTP_3/internal/Point_targets.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
 #include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
+#include <CGAL/DGG_VTP_3/internal/nearest_sources.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 
 #include <CGAL/Polygon_mesh_processing/locate.h>
@@ -48,8 +49,9 @@ namespace DGG_VTP_3 {
 template <class Solver>
 class Shortest_path_tree
 {
-  using Computation_FT = typename Solver::Computation_FT;
-  using Index = typename Solver::Index;
+  using Core = typename Solver::Core;
+  using Computation_FT = typename Core::Computation_FT;
+  using Index = typename Core::Index;
   using Tracer = internal::Path_tracer<Computation_FT>;
   using Internal_point = internal::Path_point_internal<Computation_FT>;
 
@@ -74,7 +76,7 @@ public:
   };
 
   /// the distance of `v` (`+infinity` if unreachable)
-  FT distance(vertex_descriptor v) const { return FT(m_distance[m_solver->checked_vertex(v)]); }
+  FT distance(vertex_descriptor v) const { return FT(m_distance[m_core->checked_vertex(v)]); }
   /// the distance of the `k`-th target of the query, vertex or point (`+infinity` if unreachable or
   /// beyond the query's maximum distance)
   FT target_distance(std::size_t k) const
@@ -88,20 +90,14 @@ public:
   const Propagation_statistics& statistics() const { return m_statistics; }
 
   /// the number of the nearest source of `v` in the query's order (`std::size_t(-1)` if unreachable)
-  std::size_t nearest_source(vertex_descriptor v) const
-  {
-    Index u = m_solver->checked_vertex(v);
-    for(std::size_t steps = 0; steps <= m_origin.size() && u < m_origin.size(); ++steps)
-      u = m_origin[u];
-    return u == no_origin() || u < m_origin.size() ? std::size_t(-1) : std::size_t(u - m_origin.size());
-  }
+  std::size_t nearest_source(vertex_descriptor v) const { return m_nearest[m_core->checked_vertex(v)]; }
 
   /// writes the shortest path from `target` to its nearest source into `out`, as `Path_point`s,
   /// from the target to the source; nothing if it is unreachable
   template <class OutputIterator>
   OutputIterator shortest_path(vertex_descriptor target, OutputIterator out) const
   {
-    return to_user(path_from_vertex(m_solver->checked_vertex(target)), out);
+    return to_user(path_from_vertex(m_core->checked_vertex(target)), out);
   }
 
   /// the same for the `k`-th target of the query, vertex or point
@@ -116,11 +112,11 @@ public:
     if(a.origin != no_origin() && a.distance < internal::Number_type_math<Computation_FT>::infinity() &&
        a.distance <= m_query.max_distance) // farther points are unreached, as farther vertices
     {
-      const Tracer tracer(m_solver->m_mesh);
+      const Tracer tracer(m_core->mesh());
       const Index h = a.frame;
       const int c = int(h % 3);
-      const auto apex = m_solver->m_mesh.apex(h);
-      const internal::Vec2<Computation_FT> q{a.barycentric[(c + 1) % 3] * m_solver->m_mesh.length(h) +
+      const auto apex = m_core->mesh().apex(h);
+      const internal::Vec2<Computation_FT> q{a.barycentric[(c + 1) % 3] * m_core->mesh().length(h) +
                                                a.barycentric[(c + 2) % 3] * apex.x,
                                              a.barycentric[(c + 2) % 3] * apex.y};
       Internal_point start{Internal_point::FACE, h / 3, a.barycentric, Index(-1)};
@@ -148,18 +144,19 @@ public:
 
 private:
   friend Solver;
-  using Arrival = typename internal::Window_propagation<Computation_FT>::Arrival;
+  using Propagation = typename Core::Propagation;
+  using Arrival = typename Propagation::Arrival;
   using Target = typename internal::Point_targets<Computation_FT>::Arrival;
-  // where a target of the query is: a vertex (true) or the number of a point target
-  using Place = std::pair<bool, Index>;
+  using Place = typename Core::Place;
 
-  static Index no_origin() { return internal::Window_propagation<Computation_FT>::no_origin(); }
+  static Index no_origin() { return Propagation::no_origin(); }
 
-  Shortest_path_tree(const Solver& solver, internal::Window_propagation<Computation_FT>& propagation,
-                     const internal::Propagation_query<Computation_FT>& query, const std::vector<Place>& places)
-    : m_solver(&solver)
+  Shortest_path_tree(const Core& core, Propagation& propagation, const typename Core::Query& query,
+                     const std::vector<Place>& places)
+    : m_core(&core)
     , m_distance(propagation.distances())
     , m_origin(propagation.origins())
+    , m_nearest(internal::nearest_sources(m_origin, no_origin()))
     , m_arrival(propagation.arrivals())
     , m_places(places)
     , m_query(query)
@@ -181,13 +178,13 @@ private:
     std::vector<Internal_point> path;
     if(m_origin[v] != no_origin() && m_distance[v] < internal::Number_type_math<Computation_FT>::infinity())
     {
-      path.push_back(Tracer(m_solver->m_mesh).vertex_point(v, first_face(v)));
+      path.push_back(Tracer(m_core->mesh()).vertex_point(v, first_face(v)));
       trace_from(v, path);
     }
     return path;
   }
 
-  Index first_face(Index v) const { return *m_solver->m_mesh.corners_begin(v) / 3; }
+  Index first_face(Index v) const { return *m_core->mesh().corners_begin(v) / 3; }
 
   // where a leg ending at `origin` (from a point at distance `from`) ends, and how long it is
   struct Leg
@@ -223,7 +220,7 @@ private:
   // the legs from vertex `v` back to a source
   void trace_from(Index v, std::vector<Internal_point>& path) const
   {
-    const Tracer tracer(m_solver->m_mesh);
+    const Tracer tracer(m_core->mesh());
     for(std::size_t steps = 0; steps <= m_distance.size(); ++steps)
     {
       const Index o = m_origin[v];
@@ -245,18 +242,19 @@ private:
       Path_point q;
       q.simplex = p.kind == Internal_point::VERTEX ? Path_point::VERTEX
                 : p.kind == Internal_point::EDGE ? Path_point::EDGE : Path_point::FACE;
-      q.location.first = m_solver->m_faces[m_solver->m_user_face[p.face]];
+      q.location.first = m_core->face(p.face);
       for(int k = 0; k < 3; ++k)
         q.location.second[k] = FT(p.barycentric[k]);
-      q.vertex = p.kind == Internal_point::VERTEX ? m_solver->m_vertices[p.vertex] : vertex_descriptor();
+      q.vertex = p.kind == Internal_point::VERTEX ? m_core->vertex(p.vertex) : vertex_descriptor();
       *out++ = q;
     }
     return out;
   }
 
-  const Solver* m_solver;
+  const Core* m_core;                     // the solver's mesh and numbering
   std::vector<Computation_FT> m_distance; // per vertex
   std::vector<Index> m_origin;            // per vertex: the pseudo-source of its path
+  std::vector<std::size_t> m_nearest;     // per vertex: the number of its nearest source, or -1
   std::vector<Arrival> m_arrival;         // per vertex: the corner and direction its path arrives from
   std::vector<Target> m_targets;          // per point target of the query: how its path arrives
   std::vector<Place> m_places;            // per target of the query, in its order: where it is

@@ -14,43 +14,24 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
-#include <CGAL/DGG_VTP_3/Geodesic_distance_solver.h>
+#include <CGAL/DGG_VTP_3/Propagation_statistics.h>
+#include <CGAL/DGG_VTP_3/Shortest_path_tree.h>
+#include <CGAL/DGG_VTP_3/parameters.h>
+#include <CGAL/DGG_VTP_3/internal/Element_numbering.h>
+#include <CGAL/DGG_VTP_3/internal/Solver_core.h>
 #include <CGAL/DGG_VTP_3/internal/unfold_input.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
+#include <CGAL/tags.h>
 
-#include <boost/graph/graph_traits.hpp>
-
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
 #include <utility>
 #include <vector>
-
-namespace CGAL {
-namespace DGG_VTP_3 {
-namespace internal {
-
-// A triangle soup has no graph type: its vertices and faces are their indices.
-struct Triangle_soup_numbering
-{};
-
-} // namespace internal
-} // namespace DGG_VTP_3
-} // namespace CGAL
-
-namespace boost {
-
-template <>
-struct graph_traits<CGAL::DGG_VTP_3::internal::Triangle_soup_numbering>
-{
-  using vertex_descriptor = std::size_t;
-  using face_descriptor = std::size_t;
-};
-
-} // namespace boost
 
 namespace CGAL {
 namespace DGG_VTP_3 {
@@ -75,13 +56,20 @@ namespace DGG_VTP_3 {
  */
 template <class GeomTraits>
 class Triangle_soup_geodesic_distance_solver
-  : public Geodesic_distance_solver<internal::Triangle_soup_numbering, GeomTraits,
-                                    Identity_property_map<std::size_t>, Identity_property_map<std::size_t>>
 {
-  using Base = Geodesic_distance_solver<internal::Triangle_soup_numbering, GeomTraits,
-                                        Identity_property_map<std::size_t>, Identity_property_map<std::size_t>>;
-
 public:
+  using Traits = GeomTraits;
+  using FT = typename Traits::FT;
+  /// the index of a point
+  using vertex_descriptor = std::size_t;
+  /// the index of a triangle
+  using face_descriptor = std::size_t;
+  /// the vertex and face index maps: a soup's elements are their indices
+  using Vertex_index_map = Identity_property_map<std::size_t>;
+  using Face_index_map = Identity_property_map<std::size_t>;
+  /// a point of the surface: a triangle and barycentric coordinates, as for `Geodesic_distance_solver`
+  using Face_location = std::pair<face_descriptor, std::array<FT, 3>>;
+
   /*!
    * prepares the soup for distance queries; the arrays are not read again afterwards.
    *
@@ -111,33 +99,83 @@ public:
   template <class PointRange, class TriangleRange, class NamedParameters = parameters::Default_named_parameters>
   Triangle_soup_geodesic_distance_solver(const PointRange& points, const TriangleRange& triangles,
                                          const NamedParameters& np = parameters::default_values())
-    : Triangle_soup_geodesic_distance_solver(unfold(points, triangles, np))
+    : m_core(prepare(points, triangles, np))
   {}
 
-private:
-  using Mesh = typename Base::Mesh;
-
-  // the base is built from the unfolded soup and the order of its faces
-  struct Unfolded
+  /// as `Geodesic_distance_solver::compute_distances()`
+  template <class ConcurrencyTag = Sequential_tag, class Source, class VertexDistanceMap,
+            class NamedParameters = parameters::Default_named_parameters>
+  Propagation_statistics compute_distances(const Source& source, VertexDistanceMap distances,
+                                           const NamedParameters& np = parameters::default_values()) const
   {
-    Mesh mesh;
-    std::vector<std::uint32_t> order;
-  };
+    return m_core.template distances_to_nearest_source<ConcurrencyTag>(std::vector<Source>(1, source), distances, np);
+  }
 
-  Triangle_soup_geodesic_distance_solver(Unfolded&& unfolded) : Base(std::move(unfolded.mesh), unfolded.order) {}
+  /// as `Geodesic_distance_solver::compute_distances_to_nearest_source()`
+  template <class ConcurrencyTag = Sequential_tag, class SourceRange, class VertexDistanceMap,
+            class NamedParameters = parameters::Default_named_parameters>
+  Propagation_statistics compute_distances_to_nearest_source(const SourceRange& sources, VertexDistanceMap distances,
+                                                             const NamedParameters& np = parameters::default_values()) const
+  {
+    return m_core.template distances_to_nearest_source<ConcurrencyTag>(sources, distances, np);
+  }
+
+  /// as `Geodesic_distance_solver::compute_distances_from_each_source()`
+  template <class ConcurrencyTag = Sequential_tag, class VertexRange, class VertexDistanceMapRange,
+            class NamedParameters = parameters::Default_named_parameters>
+  std::vector<Propagation_statistics>
+  compute_distances_from_each_source(const VertexRange& sources, const VertexDistanceMapRange& distance_maps,
+                                     const NamedParameters& np = parameters::default_values()) const
+  {
+    return m_core.template distances_from_each_source<ConcurrencyTag>(sources, distance_maps, np);
+  }
+
+  /// as `Geodesic_distance_solver::compute_distances_from_each_source_set()`, `distances[i]`
+  /// being the distance of point `i`
+  template <class ConcurrencyTag = Sequential_tag, class SourceSetRange, class RowFunction,
+            class NamedParameters = parameters::Default_named_parameters>
+  void compute_distances_from_each_source_set(const SourceSetRange& source_sets, const RowFunction& row,
+                                              const NamedParameters& np = parameters::default_values()) const
+  {
+    m_core.template distances_from_each_source_set<ConcurrencyTag>(source_sets, row, np);
+  }
+
+  /// as `Geodesic_distance_solver::compute_shortest_path_tree()`
+  template <class ConcurrencyTag = Sequential_tag, class SourceRange,
+            class NamedParameters = parameters::Default_named_parameters>
+  Shortest_path_tree<Triangle_soup_geodesic_distance_solver>
+  compute_shortest_path_tree(const SourceRange& sources, const NamedParameters& np = parameters::default_values()) const
+  {
+    return m_core.template shortest_path_tree<ConcurrencyTag>(
+      sources, np, [this](auto& propagation, const auto& query, const auto& targets) {
+        return Shortest_path_tree<Triangle_soup_geodesic_distance_solver>(m_core, propagation, query, targets);
+      });
+  }
+
+  /// the number of points
+  std::size_t number_of_vertices() const { return m_core.number_of_vertices(); }
+
+  /// as `Geodesic_distance_solver::number_of_non_manifold_vertices()`
+  std::size_t number_of_non_manifold_vertices() const { return m_core.number_of_non_manifold_vertices(); }
+
+private:
+  friend class Shortest_path_tree<Triangle_soup_geodesic_distance_solver>;
+  using Core = internal::Solver_core<internal::Index_numbering, FT>;
 
   template <class PointRange, class TriangleRange, class NamedParameters>
-  static Unfolded unfold(const PointRange& points, const TriangleRange& triangles, const NamedParameters& np)
+  static Core prepare(const PointRange& points, const TriangleRange& triangles, const NamedParameters& np)
   {
     using Point = typename std::iterator_traits<decltype(std::begin(points))>::value_type;
-    Unfolded unfolded;
-    unfolded.order = internal::unfold_triangle_soup(
+    typename Core::Mesh mesh;
+    const std::vector<std::uint32_t> order = internal::unfold_triangle_soup(
       points, triangles,
       parameters::choose_parameter<Identity_property_map<Point>>(parameters::get_parameter(np, internal_np::point_map)),
       parameters::choose_parameter<GeomTraits>(parameters::get_parameter(np, internal_np::geom_traits)),
-      unfolded.mesh);
-    return unfolded;
+      mesh);
+    return Core(internal::Index_numbering(mesh.number_of_vertices(), mesh.number_of_faces()), std::move(mesh), order);
   }
+
+  Core m_core; // the prepared soup and the queries
 };
 
 } // namespace DGG_VTP_3

@@ -18,9 +18,6 @@
 
 #include <CGAL/number_utils.h>
 
-#include <boost/graph/graph_traits.hpp>
-#include <boost/property_map/property_map.hpp>
-
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -40,12 +37,11 @@ namespace internal {
 // CGAL::Polygon_mesh_processing::Face_location: a face and the barycentric coordinates of
 // source(halfedge(f)), target(halfedge(f)), target(next(halfedge(f))), the order of the corners of
 // Unfolded_mesh) checked and turned into the solver's numbering.
-template <class TriangleMesh, class VertexIndexMap, class FaceIndexMap, class UnfoldedMesh, class FT>
+template <class Numbering, class UnfoldedMesh, class FT>
 class Query_builder
 {
-  using GT = boost::graph_traits<TriangleMesh>;
-  using vertex_descriptor = typename GT::vertex_descriptor;
-  using face_descriptor = typename GT::face_descriptor;
+  using vertex_descriptor = typename Numbering::vertex_descriptor;
+  using face_descriptor = typename Numbering::face_descriptor;
   using Index = std::uint32_t;
 
 public:
@@ -57,12 +53,18 @@ public:
     Surface_point<FT> point;
   };
 
-  Query_builder(const VertexIndexMap& vim, const std::vector<vertex_descriptor>& vertices, const FaceIndexMap& fim,
-                const std::vector<face_descriptor>& faces, const std::vector<Index>& internal_face,
-                const UnfoldedMesh& mesh)
-    : m_vim(vim), m_vertices(vertices), m_fim(fim), m_faces(faces), m_internal_face(internal_face)
-    , m_mesh(mesh)
+  // `internal_face`: the number of each face in `mesh`, by the face's number in `numbering`
+  Query_builder(const Numbering& numbering, const std::vector<Index>& internal_face, const UnfoldedMesh& mesh)
+    : m_numbering(numbering), m_internal_face(internal_face), m_mesh(mesh)
   {}
+
+  Index vertex_index(vertex_descriptor v, const char* what) const
+  {
+    const std::size_t i = m_numbering.vertex_index(v);
+    if(i == m_numbering.number_of_vertices())
+      throw std::invalid_argument(std::string("the ") + what + " is not a vertex of the mesh");
+    return Index(i);
+  }
 
   template <class Element>
   Location locate(const Element& e, const char* what) const
@@ -121,14 +123,6 @@ public:
   }
 
 private:
-  Index vertex_index(vertex_descriptor v, const char* what) const
-  {
-    const std::size_t i = static_cast<std::size_t>(get(m_vim, v));
-    if(i >= m_vertices.size() || m_vertices[i] != v)
-      throw std::invalid_argument(std::string("the ") + what + " is not a vertex of the mesh");
-    return Index(i);
-  }
-
   // Barycentric coordinates may be off by rounding (PMP::locate() gives such), not more: each at
   // least -tolerance, their sum within tolerance of 1, the tolerance being 1e-12, or 64 units in
   // the last place of a coarser floating-point type. Slightly negative ones become 0 and the
@@ -136,8 +130,8 @@ private:
   template <class Coordinates>
   Location surface_point(face_descriptor f, const Coordinates& coordinates, const char* what) const
   {
-    const std::size_t i = static_cast<std::size_t>(get(m_fim, f));
-    if(i >= m_faces.size() || m_faces[i] != f)
+    const std::size_t i = m_numbering.face_index(f);
+    if(i == m_numbering.number_of_faces())
       throw std::invalid_argument(std::string("the face of the ") + what + " is not a face of the mesh");
     using Coordinate = std::decay_t<decltype(coordinates[0])>;
     double tolerance = 1e-12;
@@ -181,10 +175,7 @@ private:
     return l;
   }
 
-  const VertexIndexMap& m_vim;
-  const std::vector<vertex_descriptor>& m_vertices;
-  const FaceIndexMap& m_fim;
-  const std::vector<face_descriptor>& m_faces;
+  const Numbering& m_numbering;
   const std::vector<Index>& m_internal_face;
   const UnfoldedMesh& m_mesh;
 };

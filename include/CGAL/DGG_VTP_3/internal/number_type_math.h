@@ -63,10 +63,24 @@ struct Number_type_math
 template <class FT>
 struct Number_type_math<FT, true>
 {
+  static constexpr bool has_sqrt =
+    !std::is_same<typename Algebraic_structure_traits<FT>::Sqrt, Null_functor>::value;
+  static_assert(has_sqrt,
+                "DGG_VTP_3 needs square roots, and this exact number type has none (the FT of "
+                "CGAL::Exact_predicates_exact_constructions_kernel): use "
+                "CGAL::Exact_predicates_exact_constructions_kernel_with_sqrt for exact distances, or "
+                "CGAL::Exact_predicates_inexact_constructions_kernel (double)");
+
   static constexpr bool is_exact = true;
   static FT infinity() { return FT((std::numeric_limits<double>::max)()); }
   static FT machine_epsilon() { return FT(0); }
-  static FT sqrt(const FT& x) { return CGAL::sqrt(x); }
+  static FT sqrt(const FT& x)
+  {
+    if constexpr(has_sqrt)
+      return CGAL::sqrt(x);
+    else
+      return x; // never run: the static_assert above stays the only error
+  }
   static FT abs(const FT& x) { return CGAL::abs(x); }
   template <class T>
   static FT convert(const T& x) { return FT(x); }

@@ -1,0 +1,268 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// All rights reserved.
+//
+// This file is part of DGG_VTP_3, a package written for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_SOLVER_CORE_H
+#define CGAL_DGG_VTP_3_INTERNAL_SOLVER_CORE_H
+
+#include <CGAL/license/DGG_VTP_3.h>
+
+#include <CGAL/DGG_VTP_3/Propagation_statistics.h>
+#include <CGAL/DGG_VTP_3/parameters.h>
+#include <CGAL/DGG_VTP_3/internal/Effective_concurrency_tag.h>
+#include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
+#include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
+#include <CGAL/DGG_VTP_3/internal/Query_builder.h>
+#include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
+#include <CGAL/DGG_VTP_3/internal/nearest_sources.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/for_each.h>
+#include <CGAL/property_map.h>
+#include <CGAL/tags.h>
+
+#include <boost/range/irange.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// What Geodesic_distance_solver and Triangle_soup_geodesic_distance_solver share, all of it: the
+// prepared mesh and every query, from the user's sources and named parameters to the user's
+// outputs. The solvers differ only by how their user names vertices and faces (`Numbering`, see
+// Element_numbering.h); `FT` is the number type of the results.
+template <class Numbering, class FT>
+class Solver_core
+{
+public:
+  // float input and output, the propagation in double: in float, windows that tie within
+  // rounding get trimmed in the wrong order
+  using Computation_FT = typename std::conditional<std::is_same<FT, float>::value, double, FT>::type;
+  using Mesh = Unfolded_mesh<Computation_FT>;
+  using Index = typename Mesh::Index;
+  using Query = Propagation_query<Computation_FT>;
+  using Propagation = Window_propagation<Computation_FT>;
+  using vertex_descriptor = typename Numbering::vertex_descriptor;
+  using face_descriptor = typename Numbering::face_descriptor;
+  // where a target of a query is: a vertex (true) or the number of a point target
+  using Place = std::pair<bool, Index>;
+
+  // `order`: new face i of `mesh` is the face of number order[i] (see unfold_triangles())
+  Solver_core(Numbering numbering, Mesh&& mesh, const std::vector<Index>& order)
+    : m_numbering(std::move(numbering)), m_mesh(std::move(mesh)), m_partition(m_mesh), m_user_face(order)
+  {
+    m_internal_face.resize(order.size());
+    for(std::size_t f = 0; f < order.size(); ++f)
+      m_internal_face[order[f]] = Index(f);
+  }
+
+  std::size_t number_of_vertices() const { return m_numbering.number_of_vertices(); }
+  std::size_t number_of_non_manifold_vertices() const { return m_mesh.number_of_non_manifold_vertices(); }
+  const Mesh& mesh() const { return m_mesh; }
+  vertex_descriptor vertex(Index v) const { return m_numbering.vertex(v); }
+  face_descriptor face(Index f) const { return m_numbering.face(m_user_face[f]); }
+  Index checked_vertex(vertex_descriptor v, const char* what = "vertex") const { return builder().vertex_index(v, what); }
+
+  // ---------------------------------------------------------------------------------------------
+  // Queries
+  // ---------------------------------------------------------------------------------------------
+
+  template <class ConcurrencyTag, class SourceRange, class VertexDistanceMap, class NamedParameters>
+  Propagation_statistics distances_to_nearest_source(const SourceRange& sources, VertexDistanceMap distances,
+                                                     const NamedParameters& np) const
+  {
+    const Set_up s = set_up(sources, np);
+    Propagation propagation(m_mesh, m_partition, s.accuracy);
+    propagation.template run<Effective_tag<ConcurrencyTag>>(s.query);
+    const std::vector<Computation_FT>& d = propagation.distances();
+    for(std::size_t i = 0; i < d.size(); ++i)
+      put(distances, m_numbering.vertex(i), FT(d[i]));
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::target_distances_t>::value)
+    {
+      auto out = parameters::get_parameter(np, internal_np::target_distances_t());
+      const std::vector<Computation_FT> at_points = propagation.point_targets().distances();
+      for(const Place& t : s.targets)
+      {
+        const Computation_FT dt = t.first ? d[t.second] : at_points[t.second];
+        *out++ = FT(dt > s.query.max_distance ? Number_type_math<Computation_FT>::infinity() : dt);
+      }
+    }
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value)
+    {
+      auto labels = parameters::get_parameter(np, internal_np::nearest_source_map_t());
+      const std::vector<std::size_t> nearest = nearest_sources(propagation.origins(), Propagation::no_origin());
+      for(std::size_t i = 0; i < d.size(); ++i)
+        put(labels, m_numbering.vertex(i),
+            d[i] < Number_type_math<Computation_FT>::infinity() ? nearest[i] : std::size_t(-1));
+    }
+    return propagation.statistics();
+  }
+
+  // One propagation per set of source vertices, each on one thread; `row(k, distances,
+  // statistics)` is called as the k-th is done, `distances` indexed by the vertices' numbers.
+  // Everything is checked before the first propagation.
+  template <class ConcurrencyTag, class SourceSetRange, class RowFunction, class NamedParameters>
+  void distances_from_each_source_set(const SourceSetRange& source_sets, const RowFunction& row,
+                                      const NamedParameters& np) const
+  {
+    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value,
+                  "one field per source: the named parameter targets is not taken "
+                  "(call compute_distances() once per source instead)");
+    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::target_distances_t>::value,
+                  "one field per source: the named parameter target_distances is not taken "
+                  "(call compute_distances() once per source instead)");
+    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value,
+                  "one field per source: the named parameter nearest_source_map is not taken "
+                  "(the nearest source of a vertex is that of its field)");
+    Query options;
+    const Computation_FT accuracy = checked_accuracy(np);
+    add_max_distance(np, options);
+    // the sets one after the other: those of set k are vertices[begin[k]] to vertices[begin[k + 1] - 1]
+    std::vector<Index> vertices;
+    std::vector<std::size_t> begin(1, 0);
+    for(const auto& set : source_sets)
+    {
+      for(const auto& v : set)
+        vertices.push_back(checked_vertex(v, "source"));
+      if(vertices.size() == begin.back())
+        throw std::invalid_argument("source set " + std::to_string(begin.size() - 1) + " is empty");
+      begin.push_back(vertices.size());
+    }
+    CGAL::for_each<Effective_tag<ConcurrencyTag>>(boost::irange(std::size_t(0), begin.size() - 1), [&](std::size_t k) {
+      Query query = options;
+      query.vertex_sources.assign(vertices.begin() + begin[k], vertices.begin() + begin[k + 1]);
+      query.source_numbers.assign(query.vertex_sources.size(), 0); // the set is one source
+      Propagation propagation(m_mesh, m_partition, accuracy);
+      propagation.template run<Sequential_tag>(query);
+      if constexpr(std::is_same<FT, Computation_FT>::value)
+        row(k, propagation.distances(), propagation.statistics());
+      else
+      {
+        const std::vector<Computation_FT>& d = propagation.distances();
+        row(k, std::vector<FT>(d.begin(), d.end()), propagation.statistics());
+      }
+      return true;
+    });
+  }
+
+  template <class ConcurrencyTag, class VertexRange, class VertexDistanceMapRange, class NamedParameters>
+  std::vector<Propagation_statistics> distances_from_each_source(const VertexRange& sources,
+                                                                 const VertexDistanceMapRange& distance_maps,
+                                                                 const NamedParameters& np) const
+  {
+    std::vector<std::array<vertex_descriptor, 1>> sets;
+    for(const vertex_descriptor& v : sources)
+      sets.push_back({{v}});
+    if(sets.size() != static_cast<std::size_t>(std::distance(std::begin(distance_maps), std::end(distance_maps))))
+      throw std::invalid_argument("one distance map per source is needed");
+    std::vector<Propagation_statistics> statistics(sets.size());
+    distances_from_each_source_set<ConcurrencyTag>(
+      sets,
+      [&](std::size_t k, const std::vector<FT>& d, const Propagation_statistics& s) {
+        const auto& map = *(std::begin(distance_maps) + k);
+        for(std::size_t i = 0; i < d.size(); ++i)
+          put(map, m_numbering.vertex(i), d[i]);
+        statistics[k] = s;
+      },
+      np);
+    return statistics;
+  }
+
+  // the propagation of compute_shortest_path_tree(), handed with its query and the places of its
+  // targets to `make_tree`, whose result is returned
+  template <class ConcurrencyTag, class SourceRange, class NamedParameters, class MakeTree>
+  auto shortest_path_tree(const SourceRange& sources, const NamedParameters& np, const MakeTree& make_tree) const
+  {
+    Set_up s = set_up(sources, np);
+    s.query.record_origins = s.query.record_arrivals = true;
+    Propagation propagation(m_mesh, m_partition, s.accuracy);
+    propagation.template run<Effective_tag<ConcurrencyTag>>(s.query);
+    return make_tree(propagation, s.query, s.targets);
+  }
+
+private:
+  template <class ConcurrencyTag>
+  using Effective_tag = typename Effective_concurrency_tag<ConcurrencyTag, Computation_FT>::type;
+
+  Query_builder<Numbering, Mesh, Computation_FT> builder() const
+  {
+    return Query_builder<Numbering, Mesh, Computation_FT>(m_numbering, m_internal_face, m_mesh);
+  }
+
+  // a query of sources and named parameters, checked
+  struct Set_up
+  {
+    Query query;
+    Computation_FT accuracy;
+    std::vector<Place> targets; // per target, in the order of the named parameter
+  };
+
+  template <class SourceRange, class NamedParameters>
+  Set_up set_up(const SourceRange& sources, const NamedParameters& np) const
+  {
+    Set_up s;
+    s.accuracy = checked_accuracy(np);
+    builder().add_sources(sources, s.query);
+    if(s.query.vertex_sources.empty() && s.query.point_sources.empty())
+      throw std::invalid_argument("no source given");
+    add_max_distance(np, s.query);
+    s.query.record_origins =
+      !parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value;
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value)
+      s.targets = builder().add_targets(parameters::get_parameter(np, internal_np::targets_t()), s.query);
+    return s;
+  }
+
+  template <class NamedParameters>
+  static Computation_FT checked_accuracy(const NamedParameters& np)
+  {
+    const double accuracy = parameters::choose_parameter(parameters::get_parameter(np, internal_np::accuracy), 0.);
+    if(!(accuracy >= 0. && accuracy <= maximal_accuracy))
+      throw std::invalid_argument("the accuracy must be a number in [0, 1] (0: exact); got " + std::to_string(accuracy));
+    return number<Computation_FT>(accuracy);
+  }
+
+  template <class NamedParameters>
+  static void add_max_distance(const NamedParameters& np, Query& query)
+  {
+    const double max_distance = parameters::choose_parameter(
+      parameters::get_parameter(np, internal_np::max_distance_t()), std::numeric_limits<double>::infinity());
+    if(!(max_distance >= 0.))
+      throw std::invalid_argument("the maximum distance must be a number >= 0");
+    query.max_distance = max_distance < std::numeric_limits<double>::infinity()
+                           ? number<Computation_FT>(max_distance)
+                           : Number_type_math<Computation_FT>::infinity();
+  }
+
+  Numbering m_numbering;                  // the user's vertices and faces <-> their numbers
+  Mesh m_mesh;                            // intrinsic geometry and combinatorics
+  Patch_partition<Computation_FT> m_partition; // the faces cut into patches for the propagation's rounds
+  std::vector<Index> m_internal_face;     // face number -> face of m_mesh
+  std::vector<Index> m_user_face;         // face of m_mesh -> face number
+};
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_SOLVER_CORE_H
