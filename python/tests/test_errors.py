@@ -51,9 +51,10 @@ def test_bad_precision():
     (dict(sources=[]), "no source given"),
     (dict(points=[[0, math.nan, 0]]), "points needs finite coordinates"),
     (dict(points=[[0, 0]]), r"points must have shape \(k, 3\)"),
-    (dict(sources=0, epsilon=-1e-3), "the accuracy must be a finite number >= 0"),
-    (dict(sources=0, epsilon=math.nan), "the accuracy must be a finite number >= 0"),
-    (dict(sources=0, epsilon=math.inf), "the accuracy must be a finite number >= 0"),
+    (dict(sources=0, epsilon=-1e-3), r"the accuracy must be a number in \[0, 1\]"),
+    (dict(sources=0, epsilon=math.nan), r"the accuracy must be a number in \[0, 1\]"),
+    (dict(sources=0, epsilon=math.inf), r"the accuracy must be a number in \[0, 1\]"),
+    (dict(sources=0, epsilon=1.5), r"the accuracy must be a number in \[0, 1\]"),
     (dict(sources=0, max_distance=-1.0), "the maximum distance must be a number >= 0"),
     (dict(sources=0, max_distance=math.nan), "the maximum distance must be a number >= 0"),
     (dict(sources=0, threads=-2), "threads must be >= 0"),
@@ -76,7 +77,7 @@ def test_bad_targets(solver):
         solver.shortest_path(0, target=1, target_point=[0, 0, 0])
     with pytest.raises(ValueError, match="give one target"):
         solver.shortest_path(0, target=[1, 2])
-    with pytest.raises(ValueError, match="the accuracy must be a finite number >= 0"):
+    with pytest.raises(ValueError, match=r"the accuracy must be a number in \[0, 1\]"):
         solver.distances_from_each([0, 1], epsilon=-1.0)
 
 
