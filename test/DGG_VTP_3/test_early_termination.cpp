@@ -42,22 +42,7 @@ Soup mixed_edge_lengths(std::uint64_t seed)
   for(std::size_t j = 0; j <= ny; ++j)
     for(std::size_t i = 0; i <= nx; ++i)
       soup.points.push_back({x[i], 0.05 * double(j), random.uniform(-0.02, 0.02)});
-  const auto id = [nx](std::size_t i, std::size_t j) { return j * (nx + 1) + i; };
-  for(std::size_t j = 0; j < ny; ++j)
-    for(std::size_t i = 0; i < nx; ++i)
-    {
-      const std::size_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if(random.coin())
-      {
-        soup.faces.push_back({a, b, c});
-        soup.faces.push_back({a, c, d});
-      }
-      else
-      {
-        soup.faces.push_back({a, b, d});
-        soup.faces.push_back({b, c, d});
-      }
-    }
+  add_grid_triangles(nx, ny, random, soup);
   return soup;
 }
 

@@ -304,6 +304,28 @@ struct Rigid_motion
   }
 };
 
+// The triangles of a grid of (nx+1) x (ny+1) points, point (i, j) being soup point j * (nx + 1) + i:
+// each quad split along a random diagonal.
+inline void add_grid_triangles(std::size_t nx, std::size_t ny, Random& random, Soup& soup)
+{
+  const auto id = [nx](std::size_t i, std::size_t j) { return j * (nx + 1) + i; };
+  for(std::size_t j = 0; j < ny; ++j)
+    for(std::size_t i = 0; i < nx; ++i)
+    {
+      const std::size_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if(random.coin())
+      {
+        soup.faces.push_back({a, b, c});
+        soup.faces.push_back({a, c, d});
+      }
+      else
+      {
+        soup.faces.push_back({a, b, d});
+        soup.faces.push_back({b, c, d});
+      }
+    }
+}
+
 // A flat, convex rectangle [0, nx*dx] x [0, ny*dy] triangulated from a grid of (nx+1) x (ny+1)
 // points: interior points jittered by up to `jitter` times the cell size in each direction,
 // border points only along the border (so the patch stays a rectangle and every quad stays
@@ -326,22 +348,7 @@ inline Soup flat_patch(std::size_t nx, std::size_t ny, double dx, double dy, dou
         y += jy * dy;
       soup.points.push_back(motion(x, y, 0.));
     }
-  const auto id = [nx](std::size_t i, std::size_t j) { return j * (nx + 1) + i; };
-  for(std::size_t j = 0; j < ny; ++j)
-    for(std::size_t i = 0; i < nx; ++i)
-    {
-      const std::size_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if(random.coin())
-      {
-        soup.faces.push_back({a, b, c});
-        soup.faces.push_back({a, c, d});
-      }
-      else
-      {
-        soup.faces.push_back({a, b, d});
-        soup.faces.push_back({b, c, d});
-      }
-    }
+  add_grid_triangles(nx, ny, random, soup);
   return soup;
 }
 
