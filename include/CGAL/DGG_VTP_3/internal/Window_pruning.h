@@ -109,7 +109,7 @@ struct Best_toward_apex
 // on either side of that vertex meet along the ray to c, their ends and the crossing each
 // rounded on their own, and the crossing may fall in a gap of a few ulps between them. Then no
 // window would reach c straight, and the path through that vertex would be lost (c's distance
-// too long by up to 0.3%). A ray that misses by rounding stands for a real path, along the
+// too long by up to 0.14%). A ray that misses by rounding stands for a real path, along the
 // window's end ray, longer only by a term of the second order in that miss.
 template <class FT>
 inline Best_toward_apex<FT> best_toward_apex(const std::vector<Window<FT>>& windows, const Vec2<FT>& c,
