@@ -8,6 +8,7 @@
 // command-line contract is documented in README.md and in `dggvtp --help`; scripts depend on it.
 
 #include <dggvtp/command_line.h>
+#include <dggvtp/field_files.h>
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/npy.h>
 
@@ -80,9 +81,16 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
   --labels FILE          one line per vertex of the file, in the file's order: its nearest source,
                          the 0-based number of its --source or --source-point option in the order
                          given, or -1 if no source reaches it; '-' writes to standard output
-  --output-format F      text (the default) or npy: --output and --labels as NumPy .npy files
-                         (format version 1.0, shape (vertices of the file,)): the distances as
-                         little-endian float64 '<f8' (inf if unreached), the labels as '<i8'
+  --output-format F      text, npy, ply or vtk; by default each file's extension chooses (.npy,
+                         .ply, .vtk, anything else text). npy: --output and --labels as NumPy
+                         .npy files (format version 1.0, shape (vertices of the file,)): the
+                         distances as little-endian float64 '<f8' (inf if unreached), the labels
+                         as '<i8'. ply, vtk (--output only): the mesh with the field, in the
+                         file's vertex order, for MeshLab and ParaView: binary little-endian PLY
+                         with vertex x y z, float quality (the distance; unreached: the largest
+                         finite distance), double distance (inf if unreached) and, with
+                         --labels, int label; or legacy binary VTK polydata with the point
+                         scalars distance (double) and label (int)
   --stats FILE           one JSON object: sizes, times, window counts, peak memory
   --quiet                no summary, no warnings
   --help                 this text
@@ -132,7 +140,7 @@ struct Options : dggvtp::Propagation_options
   long threads = 1;
   std::string output;
   std::string labels;
-  std::string output_format = "text";
+  std::string output_format; // empty: by each file's extension
   std::string paths;
   std::string stats;
   bool quiet = false;
@@ -196,8 +204,9 @@ Options parse_options(int argc, char** argv)
     else if(arg == "--output-format")
     {
       options.output_format = value();
-      if(options.output_format != "text" && options.output_format != "npy")
-        throw Usage_error("--output-format must be text or npy");
+      if(options.output_format != "text" && options.output_format != "npy" && options.output_format != "ply" &&
+         options.output_format != "vtk")
+        throw Usage_error("--output-format must be text, npy, ply or vtk");
     }
     else if(options.parse(arg, value))
       continue;
@@ -715,6 +724,19 @@ void write_labels(const std::vector<long long>& labels, const std::string& path,
     write_values(path, std::string(), labels, put_label_line);
 }
 
+// --output in the format its option or extension gives; a PLY or VTK file reads the mesh again
+void write_output(const Run& run, const Options& options)
+{
+  const std::string format = dggvtp::output_format_of(options.output, options.output_format);
+  if(format != "ply" && format != "vtk")
+    return write_distances(run.distances, options.output, format);
+  const dggvtp::File_mesh mesh = dggvtp::read_file_mesh(options.mesh);
+  Output_file file(options.output);
+  (format == "ply" ? dggvtp::write_ply_field : dggvtp::write_vtk_field)(
+    file.get(), options.mesh, mesh, run.distances, options.labels.empty() ? nullptr : &run.labels);
+  file.commit();
+}
+
 // a number as the distances are written (%.17g, inf)
 std::string number_text(double d)
 {
@@ -811,9 +833,10 @@ int run_main(int argc, char** argv)
 
   const Clock::time_point t_write = Clock::now();
   if(!options.output.empty())
-    write_distances(run.distances, options.output, options.output_format);
+    write_output(run, options);
   if(!options.labels.empty())
-    write_labels(run.labels, options.labels, options.output_format);
+    write_labels(run.labels, options.labels,
+                 dggvtp::output_format_of(options.labels, options.output_format) == "npy" ? "npy" : "text");
   if(!options.paths.empty())
     write_paths(run, options);
   std::string lines; // the targets' distances, then the paths' lengths

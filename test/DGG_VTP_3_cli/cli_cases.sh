@@ -24,8 +24,8 @@ run() {
   local args=("$@") outputs=() mesh="" i
   for ((i = 0; i < ${#args[@]}; ++i)); do
     case ${args[i]} in
-      --output|--stats|--labels|--paths) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
-      --source|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads) i=$((i + 1)) ;;
+      --output|--stats|--labels|--paths|--isolines-output) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
+      --source|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads|--isolines|--isolines-at) i=$((i + 1)) ;;
       --source-point|--target-point|--path-to-point) i=$((i + 3)) ;;
       -*) ;;
       *) [ -n "$mesh" ] || mesh=${args[i]} ;;
@@ -45,7 +45,7 @@ run() {
   for o in "${outputs[@]}"; do
     if [ "$o" = - ]; then
       ! printf '%s\n' "$out" | grep -qiw nan || fail "NaN on standard output"
-    elif [ -f "$o" ] && [[ "$o" != *.npy ]]; then   # binary: checked by the npy cases
+    elif [ -f "$o" ] && [[ "$o" != *.npy && "$o" != *.ply && "$o" != *.vtk ]]; then   # binary: checked by their cases
       ! grep -qiw nan "$o" || fail "NaN in $o"
     fi
   done
@@ -769,6 +769,42 @@ PY
     printf 'OFF\n500000000 500000000 0\n0 0 0\n' | input huge.off
     run "$work/huge.off" --output "$work/d.txt"; expect_input_error
     [[ "$err" != *"out of memory"* ]] || fail "$err" ;;
+  field_files_ply_vtk)  # issue 30: the mesh with the field, for MeshLab and ParaView
+    check_field() { /usr/bin/python3 "$(dirname "$0")/field_files.py" "$@" || fail "field file $2: see above"; }
+    run "$spot" --quiet --source 3 --source 900 --output "$work/d.txt" --labels "$work/l.txt"; expect_rc 0
+    run "$spot" --quiet --source 3 --source 900 --output "$work/d.ply" --labels "$work/l2.txt"; expect_rc 0
+    check_field ply "$work/d.ply" "$spot" "$work/d.txt" "$work/l.txt"
+    cmp -s "$work/l.txt" "$work/l2.txt" || fail "the labels file changed with the PLY output"
+    run "$spot" --quiet --source 3 --source 900 --output "$work/d.vtk" --labels "$work/l2.txt"; expect_rc 0
+    check_field vtk "$work/d.vtk" "$spot" "$work/d.txt" "$work/l.txt"
+    run "$spot" --quiet --source 3 --output-format ply --output "$work/d.field"; expect_rc 0
+    run "$spot" --quiet --source 3 --output "$work/d3.txt"; expect_rc 0
+    check_field ply "$work/d.field" "$spot" "$work/d3.txt"
+    # unreached vertices: inf in distance, the largest finite distance in quality; the PLY of the
+    # run is the mesh the VTK file is compared with (the input is OFF)
+    u=$data/two_components_and_isolated_vertex.off
+    run "$u" --quiet --output "$work/u.txt" --labels "$work/ul.txt"; expect_rc 0
+    run "$u" --quiet --output "$work/u.ply" --labels "$work/ul.txt"; expect_rc 0
+    run "$u" --quiet --output "$work/u.vtk" --labels "$work/ul.txt"; expect_rc 0
+    check_field ply "$work/u.ply" "$work/u.ply" "$work/u.txt" "$work/ul.txt"
+    check_field vtk "$work/u.vtk" "$work/u.ply" "$work/u.txt" "$work/ul.txt"
+    grep -q inf "$work/u.txt" || fail "the unreachable case reaches everything" ;;
+  output_format_by_extension)  # issue 30: .npy, .ply, .vtk choose their format; --output-format overrides
+    run "$spot" --quiet --output "$work/d.txt" --labels "$work/l.txt"; expect_rc 0
+    run "$spot" --quiet --output "$work/d.npy" --labels "$work/l.npy"; expect_rc 0
+    check_npy "$work/d.npy" '<f8' 2930
+    check_npy "$work/l.npy" '<i8' 2930
+    od -An -v -td8 -j "$npy_data" "$work/l.npy" | tr -s ' ' '\n' | sed '/^$/d' > "$meta/labels.txt"
+    cmp -s "$meta/labels.txt" "$work/l.txt" || fail "npy labels differ from the text output"
+    for f in d.PLY d.Vtk; do
+      run "$spot" --quiet --output "$work/$f"; expect_rc 0
+      head -c 3 "$work/$f" | grep -q -e ply -e '# v' || fail "$f is not a field file"
+    done
+    run "$spot" --quiet --output-format text --output "$work/t.ply"; expect_rc 0
+    cmp -s "$work/t.ply" "$work/d.txt" || fail "--output-format text did not override the extension"
+    run "$spot" --quiet --output-format npy --output "$work/n.txt"; expect_rc 0
+    check_npy "$work/n.txt" '<f8' 2930
+    run "$spot" --quiet --output-format obj --output "$work/x.obj"; expect_usage_error ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"
