@@ -9,6 +9,7 @@
 
 #include <dggvtp/command_line.h>
 #include <dggvtp/field_files.h>
+#include <dggvtp/isoline_file.h>
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/npy.h>
 
@@ -91,6 +92,14 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          finite distance), double distance (inf if unreached) and, with
                          --labels, int label; or legacy binary VTK polydata with the point
                          scalars distance (double) and label (int)
+  --isolines K           the isolines at K distances evenly spaced between 0 and the largest
+  --isolines-at D1,D2,.. finite distance (excluded), or at the distances given, into the OBJ file
+  --isolines-output FILE of --isolines-output: per distance a comment, per connected piece of the
+                         curve its points as v lines and one l line, which ends with its first
+                         vertex again where the piece is closed; the curves are where the linear
+                         interpolation of the vertex distances over the triangles equals the
+                         distance, through the mesh's edges; edges to unreached vertices are not
+                         crossed
   --stats FILE           one JSON object: sizes, times, window counts, peak memory
   --quiet                no summary, no warnings
   --help                 this text
@@ -143,6 +152,9 @@ struct Options : dggvtp::Propagation_options
   std::string output_format; // empty: by each file's extension
   std::string paths;
   std::string stats;
+  std::size_t isolines = 0;
+  std::vector<double> isolines_at;
+  std::string isolines_output;
   bool quiet = false;
 
   // targets and paths end the propagation early
@@ -221,6 +233,29 @@ Options parse_options(int argc, char** argv)
       if(file.empty())
         throw Usage_error(arg + " needs a file name ('-' for standard output)");
     }
+    else if(arg == "--isolines")
+    {
+      options.isolines = parse_number<std::size_t>(arg, value());
+      if(options.isolines == 0)
+        throw Usage_error("--isolines needs a count >= 1");
+    }
+    else if(arg == "--isolines-at")
+    {
+      const std::string list = value();
+      for(std::size_t start = 0, end; start <= list.size(); start = end + 1)
+      {
+        end = (std::min)(list.find(',', start), list.size());
+        options.isolines_at.push_back(parse_number<double>(arg, list.substr(start, end - start)));
+        if(!std::isfinite(options.isolines_at.back()))
+          throw Usage_error("--isolines-at needs finite distances");
+      }
+    }
+    else if(arg == "--isolines-output")
+    {
+      options.isolines_output = value();
+      if(options.isolines_output.empty())
+        throw Usage_error(arg + " needs a file name ('-' for standard output)");
+    }
     else if(arg == "--quiet")
       options.quiet = true;
     else
@@ -234,9 +269,16 @@ Options parse_options(int argc, char** argv)
   if(options.stops_early() && !(options.output.empty() && options.labels.empty()))
     throw Usage_error("--target and --path-to stop the propagation before every vertex is final: "
                       "--output and --labels need another run");
+  if((options.isolines > 0 || !options.isolines_at.empty()) == options.isolines_output.empty())
+    throw Usage_error("--isolines-output goes with --isolines or --isolines-at");
+  if(options.isolines > 0 && !options.isolines_at.empty())
+    throw Usage_error("--isolines and --isolines-at do not combine");
+  if(options.stops_early() && !options.isolines_output.empty())
+    throw Usage_error("--target and --path-to stop the propagation before every vertex is final: "
+                      "isolines need another run");
   if(!options.paths.empty() && options.path_targets.empty())
     throw Usage_error("--paths needs --path-to or --path-to-point");
-  if(int(options.output == "-") + int(options.labels == "-") + int(options.paths == "-") +
+  if(int(options.output == "-") + int(options.labels == "-") + int(options.paths == "-") + int(options.isolines_output == "-") +
        int(options.stops_early()) > 1)
     throw Usage_error("only one output may go to standard output (the targets' and paths' lines are one)");
   return options;
@@ -839,6 +881,14 @@ int run_main(int argc, char** argv)
                  dggvtp::output_format_of(options.labels, options.output_format) == "npy" ? "npy" : "text");
   if(!options.paths.empty())
     write_paths(run, options);
+  if(!options.isolines_output.empty())
+  {
+    Output_file file(options.isolines_output);
+    dggvtp::write_isolines_obj(file.get(), options.mesh, run.distances,
+                               options.isolines > 0 ? dggvtp::evenly_spaced_values(run.distances, options.isolines)
+                                                    : options.isolines_at);
+    file.commit();
+  }
   std::string lines; // the targets' distances, then the paths' lengths
   for(const auto* values : {&run.target_distances, &run.path_lengths})
     for(double d : *values)
@@ -882,7 +932,7 @@ int run_main(int argc, char** argv)
   }
   if(!options.quiet)
   {
-    const bool stdout_taken = options.output == "-" || options.labels == "-" || options.stops_early();
+    const bool stdout_taken = options.output == "-" || options.labels == "-" || options.isolines_output == "-" || options.stops_early();
     std::ostream& out = stdout_taken ? std::cerr : std::cout;
     std::string sources = options.sources.size() == 1 && !options.sources[0].is_point
                             ? "source " + std::to_string(options.sources[0].vertex) : "sources";

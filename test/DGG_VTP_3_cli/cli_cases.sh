@@ -805,6 +805,33 @@ PY
     run "$spot" --quiet --output-format npy --output "$work/n.txt"; expect_rc 0
     check_npy "$work/n.txt" '<f8' 2930
     run "$spot" --quiet --output-format obj --output "$work/x.obj"; expect_usage_error ;;
+  isolines_obj)  # issue 30: --isolines K, --isolines-at, OBJ polylines
+    bunny=$meshes/bunny.ply
+    run "$bunny" --quiet --isolines 10 --isolines-output "$work/iso.obj" --output "$work/d.txt"; expect_rc 0
+    [ "$(grep -c '^# isoline ' "$work/iso.obj")" -eq 10 ] || fail "not one comment per isoline"
+    # bunny is closed: every piece closed, each point in one piece, indices in order
+    awk '/^v / { ++v; if (NF != 4) bad = "v line " NR } /^l / { if ($2 != n + 1 || $NF != $2 || NF < 5) bad = "l line " NR
+           for (i = 2; i < NF; ++i) if ($i != ++n) bad = "l line " NR " index " i }
+         END { if (n != v) bad = bad " " n " indices for " v " points"; if (bad) { print bad; exit 1 } }' "$work/iso.obj" ||
+      fail "the OBJ's pieces are not closed polylines over all its points"
+    [ "$(grep -c '^l ' "$work/iso.obj")" -ge 10 ] || fail "fewer pieces than isolines"
+    # the values: k / 11 of the farthest distance
+    farthest=$(sort -g "$work/d.txt" | tail -1)
+    awk -v f="$farthest" '/^# isoline / { k = $3; d = f * (k + 1) / 11; if ($6 - d > 1e-15 * d || d - $6 > 1e-15 * d) { print $0; exit 1 } }' \
+      "$work/iso.obj" || fail "the isoline values are not evenly spaced"
+    # open pieces end on the border, as the file gives them: a triangle and a lone vertex
+    run "$data/two_components_and_isolated_vertex.off" --quiet --isolines-at 0.5,2 --isolines-output "$work/t.obj"; expect_rc 0
+    [ "$(grep -v '^# dggvtp' "$work/t.obj")" = "$(printf '# isoline 0 at distance 0.5\nv 0 0.5 0\nv 0.5 0 0\nl 1 2\n# isoline 1 at distance 2')" ] ||
+      fail "isolines of the triangle: $(cat "$work/t.obj")"
+    run "$spot" --quiet --isolines 3 --isolines-output -; expect_rc 0
+    [ "$(printf '%s\n' "$out" | grep -c '^# isoline')" -eq 3 ] || fail "isolines on standard output"
+    for args in "--isolines 3" "--isolines-output $work/x.obj" "--isolines 0 --isolines-output $work/x.obj" \
+                "--isolines-at 1,nan --isolines-output $work/x.obj" "--isolines-at 1,,2 --isolines-output $work/x.obj" \
+                "--isolines 2 --isolines-at 1 --isolines-output $work/x.obj" "--isolines 2 --target 4 --isolines-output $work/x.obj" \
+                "--isolines 2 --output - --isolines-output -"; do
+      run "$spot" $args; expect_usage_error
+      [ ! -e "$work/x.obj" ] || fail "$args wrote a file"
+    done ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"
