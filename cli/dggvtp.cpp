@@ -10,6 +10,8 @@
 #include <dggvtp/command_line.h>
 #include <dggvtp/field_files.h>
 #include <dggvtp/isoline_file.h>
+#include <dggvtp/single_value_options.h>
+#include <dggvtp/version.h>
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/npy.h>
 
@@ -103,6 +105,7 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
   --stats FILE           one JSON object: sizes, times, window counts, peak memory
   --quiet                no summary, no warnings
   --help                 this text
+  --version              the version of dggvtp and of CGAL
 
 Targets and paths stop the propagation before the other vertices are final, so --target and
 --path-to do not combine with --output and --labels (ask for those in another run). Distances
@@ -176,6 +179,9 @@ Options parse_options(int argc, char** argv)
   const auto places_of = [&](const std::string& option) -> std::vector<Place>& {
     return option == "--source" ? options.sources : option == "--target" ? options.targets : options.path_targets;
   };
+  dggvtp::Single_value_options single_value{"--max-distance", "--epsilon", "--precision", "--threads", "--output",
+                                            "--labels", "--output-format", "--paths", "--stats", "--isolines",
+                                            "--isolines-at", "--isolines-output"};
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -184,9 +190,15 @@ Options parse_options(int argc, char** argv)
         throw Usage_error(arg + " needs a value");
       return argv[++i];
     };
+    single_value.check(arg);
     if(arg == "--help" || arg == "-h")
     {
       std::cout << usage_text;
+      std::exit(0);
+    }
+    else if(arg == "--version")
+    {
+      std::cout << dggvtp::version_text("dggvtp");
       std::exit(0);
     }
     else if(arg == "--source" || arg == "--target" || arg == "--path-to")

@@ -832,6 +832,18 @@ PY
       run "$spot" $args; expect_usage_error
       [ ! -e "$work/x.obj" ] || fail "$args wrote a file"
     done ;;
+  version_and_repeated_options)  # issue 30
+    run --version; expect_rc 0
+    [[ "$out" =~ ^dggvtp\ [0-9]+\.[0-9]+.*\ CGAL\ [0-9]+\.[0-9]+ ]] || fail "--version: $out"
+    for args in "--output $work/d.txt --output $work/e.txt" "--epsilon 0.1 --epsilon 0.1" "--precision float --precision double" \
+                "--threads 1 --threads 2" "--max-distance 1 --max-distance 2" "--output-format npy --output-format text" \
+                "--isolines 2 --isolines 3 --isolines-output $work/i.obj" "--labels $work/l.txt --labels $work/m.txt"; do
+      run "$spot" $args; expect_usage_error
+      [[ "$err" == *"more than once"* ]] || fail "$args: $err"
+      [ -z "$(ls "$work")" ] || fail "$args wrote a file"
+    done
+    # repeatable: several sources, targets, paths
+    run "$spot" --source 1 --source 2 --target 3 --target 4 --quiet; expect_rc 0 ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"
