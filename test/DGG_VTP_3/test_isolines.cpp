@@ -12,6 +12,7 @@
 #include <CGAL/DGG_VTP_3/isolines.h>
 
 #include <algorithm>
+#include <iomanip>
 #include <map>
 
 using namespace dggvtp_test;
@@ -73,8 +74,8 @@ Field_check check_isolines(const Mesh& mesh, const Mesh::Property_map<Mesh::Vert
       const double off = std::sqrt(CGAL::squared_distance(piece.points[i], p + t * edge_vector));
       BOOST_TEST(off <= 1e-12 * std::sqrt(edge_vector.squared_length()));
       const double interpolated = a + t * (b - a);
-      BOOST_TEST(std::abs(interpolated - value) <= 1e-12 * value, "point " << i << " at " << interpolated
-                                                                     << ", value " << value);
+      BOOST_TEST(std::abs(interpolated - value) <= 1e-12 * value,
+                 "point " << i << " at " << std::setprecision(17) << interpolated << ", value " << value);
       ++seen[{piece.value_index, std::size_t(edge(h, mesh))}];
       if(i > 0)
         BOOST_TEST(share_a_face(piece.halfedges[i - 1], h, mesh));
@@ -106,15 +107,11 @@ Field_check check_isolines(const Mesh& mesh, const Mesh::Property_map<Mesh::Vert
   return result;
 }
 
-Mesh read_mesh(const std::string& name)
+// the checks on the isolines of the geodesic distances from vertex 0 of a mesh file, at `count`
+// values evenly spaced strictly inside (0, farthest)
+Field_check check_isolines_of_file(const std::string& name, std::size_t count)
 {
-  return make_mesh<Mesh>(read_soup(name));
-}
-
-// geodesic distances from vertex 0, and `count` values evenly spaced strictly inside (0, farthest)
-std::pair<Mesh::Property_map<Mesh::Vertex_index, double>, std::vector<double>>
-field_and_values(Mesh& mesh, std::size_t count)
-{
+  Mesh mesh = make_mesh<Mesh>(read_soup(name));
   auto d = mesh.add_property_map<Mesh::Vertex_index, double>("v:distance", 0.).first;
   CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, d, *vertices(mesh).begin());
   double farthest = 0.;
@@ -123,7 +120,11 @@ field_and_values(Mesh& mesh, std::size_t count)
   std::vector<double> values;
   for(std::size_t k = 1; k <= count; ++k)
     values.push_back(farthest * double(k) / double(count + 1));
-  return {d, values};
+  std::vector<Piece> pieces;
+  CGAL::DGG_VTP_3::compute_isolines(mesh, d, values, std::back_inserter(pieces));
+  const Field_check check = check_isolines(mesh, d, values, pieces);
+  BOOST_TEST(check.closed + check.open >= values.size());
+  return check;
 }
 
 } // namespace
@@ -132,23 +133,14 @@ BOOST_AUTO_TEST_SUITE(isolines)
 
 BOOST_AUTO_TEST_CASE(bunny_closed_pieces)
 {
-  Mesh mesh = read_mesh("bunny.ply");
-  const auto [d, values] = field_and_values(mesh, 10);
-  std::vector<Piece> pieces;
-  CGAL::DGG_VTP_3::compute_isolines(mesh, d, values, std::back_inserter(pieces));
-  const Field_check check = check_isolines(mesh, d, values, pieces);
+  const Field_check check = check_isolines_of_file("bunny.ply", 10);
   BOOST_TEST(check.open == 0u);
-  BOOST_TEST(check.closed >= values.size());
+  BOOST_TEST(check.closed >= 10u);
 }
 
 BOOST_AUTO_TEST_CASE(lion_head_open_pieces_end_on_the_border)
 {
-  Mesh mesh = read_mesh("lion_head.ply");
-  const auto [d, values] = field_and_values(mesh, 12);
-  std::vector<Piece> pieces;
-  CGAL::DGG_VTP_3::compute_isolines(mesh, d, values, std::back_inserter(pieces));
-  const Field_check check = check_isolines(mesh, d, values, pieces);
-  BOOST_TEST(check.open >= 1u);
+  BOOST_TEST(check_isolines_of_file("lion_head.ply", 12).open >= 1u);
 }
 
 // Vertices exactly at the value count as above it: the curve passes through them, and no point
