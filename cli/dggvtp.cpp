@@ -8,6 +8,10 @@
 // command-line contract is documented in README.md and in `dggvtp --help`; scripts depend on it.
 
 #include <dggvtp/command_line.h>
+#include <dggvtp/field_files.h>
+#include <dggvtp/isoline_file.h>
+#include <dggvtp/single_value_options.h>
+#include <dggvtp/version.h>
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/npy.h>
 #include <dggvtp/output_paths.h>
@@ -78,12 +82,28 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
   --labels FILE          one line per vertex of the file, in the file's order: its nearest source,
                          the 0-based number of its --source or --source-point option in the order
                          given, or -1 if no source reaches it; '-' writes to standard output
-  --output-format F      text (the default) or npy: --output and --labels as NumPy .npy files
-                         (format version 1.0, shape (vertices of the file,)): the distances as
-                         little-endian float64 '<f8' (inf if unreached), the labels as '<i8'
+  --output-format F      text, npy, ply or vtk; by default each file's extension chooses (.npy,
+                         .ply, .vtk, anything else text). npy: --output and --labels as NumPy
+                         .npy files (format version 1.0, shape (vertices of the file,)): the
+                         distances as little-endian float64 '<f8' (inf if unreached), the labels
+                         as '<i8'. ply, vtk (--output only): the mesh with the field, in the
+                         file's vertex order, for MeshLab and ParaView: binary little-endian PLY
+                         with vertex x y z, float quality (the distance; unreached: the largest
+                         finite distance), double distance (inf if unreached) and, with
+                         --labels, int label; or legacy binary VTK polydata with the point
+                         scalars distance (double) and label (int)
+  --isolines K           the isolines at K distances evenly spaced between 0 and the largest
+  --isolines-at D1,D2,.. finite distance (excluded), or at the distances given, into the OBJ file
+  --isolines-output FILE of --isolines-output: per distance a comment, per connected piece of the
+                         curve its points as v lines and one l line, which ends with its first
+                         vertex again where the piece is closed; the curves are where the linear
+                         interpolation of the vertex distances over the triangles equals the
+                         distance, through the mesh's edges; edges to unreached vertices are not
+                         crossed
   --stats FILE           one JSON object: sizes, times, window counts, peak memory
   --quiet                no summary, no warnings
   --help                 this text
+  --version              the version of dggvtp and of CGAL
 
 Targets and paths stop the propagation before the other vertices are final, so --target and
 --path-to do not combine with --output and --labels (ask for those in another run). Distances
@@ -135,9 +155,12 @@ struct Options : dggvtp::Propagation_options
   long threads = 1;
   std::string output;
   std::string labels;
-  std::string output_format = "text";
+  std::string output_format; // empty: by each file's extension
   std::string paths;
   std::string stats;
+  std::size_t isolines = 0;
+  std::vector<double> isolines_at;
+  std::string isolines_output;
   bool quiet = false;
 
   // targets and paths end the propagation early
@@ -152,6 +175,9 @@ Options parse_options(int argc, char** argv)
   const auto places_of = [&](const std::string& option) -> std::vector<Place>& {
     return option == "--source" ? options.sources : option == "--target" ? options.targets : options.path_targets;
   };
+  dggvtp::Single_value_options single_value{"--max-distance", "--epsilon", "--precision", "--threads", "--output",
+                                            "--labels", "--output-format", "--paths", "--stats", "--isolines",
+                                            "--isolines-at", "--isolines-output"};
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -160,9 +186,15 @@ Options parse_options(int argc, char** argv)
         throw Usage_error(arg + " needs a value");
       return argv[++i];
     };
+    single_value.check(arg);
     if(arg == "--help" || arg == "-h")
     {
       std::cout << usage_text;
+      std::exit(0);
+    }
+    else if(arg == "--version")
+    {
+      std::cout << dggvtp::version_text("dggvtp");
       std::exit(0);
     }
     else if(arg == "--source" || arg == "--target" || arg == "--path-to")
@@ -192,8 +224,9 @@ Options parse_options(int argc, char** argv)
     else if(arg == "--output-format")
     {
       options.output_format = value();
-      if(options.output_format != "text" && options.output_format != "npy")
-        throw Usage_error("--output-format must be text or npy");
+      if(options.output_format != "text" && options.output_format != "npy" && options.output_format != "ply" &&
+         options.output_format != "vtk")
+        throw Usage_error("--output-format must be text, npy, ply or vtk");
     }
     else if(options.parse(arg, value))
       continue;
@@ -206,6 +239,29 @@ Options parse_options(int argc, char** argv)
                         : arg == "--labels" ? options.labels : options.paths;
       file = value();
       if(file.empty())
+        throw Usage_error(arg + " needs a file name ('-' for standard output)");
+    }
+    else if(arg == "--isolines")
+    {
+      options.isolines = parse_number<std::size_t>(arg, value());
+      if(options.isolines == 0)
+        throw Usage_error("--isolines needs a count >= 1");
+    }
+    else if(arg == "--isolines-at")
+    {
+      const std::string list = value();
+      for(std::size_t start = 0, end; start <= list.size(); start = end + 1)
+      {
+        end = (std::min)(list.find(',', start), list.size());
+        options.isolines_at.push_back(parse_number<double>(arg, list.substr(start, end - start)));
+        if(!std::isfinite(options.isolines_at.back()))
+          throw Usage_error("--isolines-at needs finite distances");
+      }
+    }
+    else if(arg == "--isolines-output")
+    {
+      options.isolines_output = value();
+      if(options.isolines_output.empty())
         throw Usage_error(arg + " needs a file name ('-' for standard output)");
     }
     else if(arg == "--quiet")
@@ -221,9 +277,16 @@ Options parse_options(int argc, char** argv)
   if(options.stops_early() && !(options.output.empty() && options.labels.empty()))
     throw Usage_error("--target and --path-to stop the propagation before every vertex is final: "
                       "--output and --labels need another run");
+  if((options.isolines > 0 || !options.isolines_at.empty()) == options.isolines_output.empty())
+    throw Usage_error("--isolines-output goes with --isolines or --isolines-at");
+  if(options.isolines > 0 && !options.isolines_at.empty())
+    throw Usage_error("--isolines and --isolines-at do not combine");
+  if(options.stops_early() && !options.isolines_output.empty())
+    throw Usage_error("--target and --path-to stop the propagation before every vertex is final: "
+                      "isolines need another run");
   if(!options.paths.empty() && options.path_targets.empty())
     throw Usage_error("--paths needs --path-to or --path-to-point");
-  if(int(options.output == "-") + int(options.labels == "-") + int(options.paths == "-") +
+  if(int(options.output == "-") + int(options.labels == "-") + int(options.paths == "-") + int(options.isolines_output == "-") +
        int(options.stops_early()) > 1)
     throw Usage_error("only one output may go to standard output (the targets' and paths' lines are one)");
   return options;
@@ -522,6 +585,19 @@ void write_labels(const std::vector<long long>& labels, const std::string& path,
     write_values(path, std::string(), labels, put_label_line);
 }
 
+// --output in the format its option or extension gives; a PLY or VTK file reads the mesh again
+void write_output(const Run& run, const Options& options)
+{
+  const std::string format = dggvtp::output_format_of(options.output, options.output_format);
+  if(format != "ply" && format != "vtk")
+    return write_distances(run.distances, options.output, format);
+  const dggvtp::File_mesh mesh = dggvtp::read_file_mesh(options.mesh);
+  Output_file file(options.output);
+  (format == "ply" ? dggvtp::write_ply_field : dggvtp::write_vtk_field)(
+    file.get(), options.mesh, mesh, run.distances, options.labels.empty() ? nullptr : &run.labels);
+  file.commit();
+}
+
 std::string place_text(const Place& p)
 {
   if(!p.is_point)
@@ -620,11 +696,20 @@ int run_main(int argc, char** argv)
 
   const Clock::time_point t_write = Clock::now();
   if(!options.output.empty())
-    write_distances(run.distances, options.output, options.output_format);
+    write_output(run, options);
   if(!options.labels.empty())
-    write_labels(run.labels, options.labels, options.output_format);
+    write_labels(run.labels, options.labels,
+                 dggvtp::output_format_of(options.labels, options.output_format) == "npy" ? "npy" : "text");
   if(!options.paths.empty())
     write_paths(run, options);
+  if(!options.isolines_output.empty())
+  {
+    Output_file file(options.isolines_output);
+    dggvtp::write_isolines_obj(file.get(), options.mesh, run.distances,
+                               options.isolines > 0 ? dggvtp::evenly_spaced_values(run.distances, options.isolines)
+                                                    : options.isolines_at);
+    file.commit();
+  }
   std::string lines; // the targets' distances, then the paths' lengths
   for(const auto* values : {&run.target_distances, &run.path_lengths})
     for(double d : *values)
@@ -668,7 +753,7 @@ int run_main(int argc, char** argv)
   }
   if(!options.quiet)
   {
-    const bool stdout_taken = options.output == "-" || options.labels == "-" || options.stops_early();
+    const bool stdout_taken = options.output == "-" || options.labels == "-" || options.isolines_output == "-" || options.stops_early();
     std::ostream& out = stdout_taken ? std::cerr : std::cout;
     std::string sources = options.sources.size() == 1 && !options.sources[0].is_point
                             ? "source " + std::to_string(options.sources[0].vertex) : "sources";

@@ -29,6 +29,8 @@
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/npy.h>
 #include <dggvtp/output_paths.h>
+#include <dggvtp/single_value_options.h>
+#include <dggvtp/version.h>
 
 #include <CGAL/DGG_VTP_3.h>
 #include <CGAL/Simple_cartesian.h>
@@ -107,6 +109,7 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
                          stderr is a terminal; under mpirun, whose output is a pipe, ask for it)
   --quiet                no summary, no warnings, no progress
   --help                 this text
+  --version              the version of dggvtp-batch and of CGAL
 
 Before the mesh is loaded, every output (--output, --checkpoint, --sources-output, --stats) is
 checked to be writable; before the first row, the file's size (rows x vertices x 4 or 8 bytes,
@@ -148,6 +151,7 @@ struct Options : dggvtp::Propagation_options
   bool progress = false;        // forced on by --progress
   bool quiet = false;
   bool help = false;
+  bool version = false; // with help: print the version instead of the usage
 
   // Messages name the checkpoint as the user knows it: the path given, or the output it is made
   // from (errors about the files inside it end with this)
@@ -161,9 +165,12 @@ struct Options : dggvtp::Propagation_options
 Options parse_options(int argc, char** argv)
 {
   Options options;
+  dggvtp::Single_value_options single_value{"--sources", "--output", "--checkpoint", "--sources-output", "--stats",
+                                            "--dtype", "--epsilon", "--precision", "--threads"};
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
+    single_value.check(arg);
     const auto value = [&]() -> std::string {
       if(i + 1 >= argc)
         throw Usage_error(arg + " needs a value");
@@ -175,9 +182,10 @@ Options parse_options(int argc, char** argv)
         throw Usage_error(arg + " needs a file name");
       return v;
     };
-    if(arg == "--help" || arg == "-h")
+    if(arg == "--help" || arg == "-h" || arg == "--version")
     {
       options.help = true;
+      options.version = arg == "--version";
       return options;
     }
     else if(arg == "--sources")
@@ -979,7 +987,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   if(options.help)
   {
     if(root)
-      std::cout << usage_text;
+      std::cout << (options.version ? dggvtp::version_text("dggvtp-batch") : std::string(usage_text));
     return 0;
   }
   long threads = options.threads;

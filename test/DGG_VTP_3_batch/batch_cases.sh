@@ -374,6 +374,19 @@ refuses_output_larger_than_free_space)
   expect_input_error "the rows still to write of --output 'out.npy'"
   [ -e out.npy.checkpoint ] || fail "the checkpoint was removed"
   ;;
+version_and_repeated_options)  # issue 30
+  run --version
+  [ "$rc" -eq 0 ] || fail "--version: exit status $rc"
+  grep -Eq '^dggvtp-batch [0-9]+\.[0-9]+.* CGAL [0-9]+\.[0-9]+' "$work/.stdout" || fail "--version: $(cat "$work/.stdout")"
+  for args in "--dtype f4 --dtype f8" "--sources all --sources 0" "--epsilon 0.1 --epsilon 0.2" "--threads 1 --threads 2"; do
+    run "$spot" --output out.npy $args; expect_usage_error
+    [[ "$err" == *"more than once"* ]] || fail "$args: $err"
+    [ ! -e out.npy ] || fail "$args wrote a file"
+  done
+  echo 0 > one.txt
+  run "$spot" --sources one.txt --output out.npy --quiet
+  [ "$rc" -eq 0 ] || fail "one of each option: exit status $rc: $err"
+  ;;
 *)
   fail "unknown case"
   ;;

@@ -24,8 +24,8 @@ run() {
   local args=("$@") outputs=() mesh="" i
   for ((i = 0; i < ${#args[@]}; ++i)); do
     case ${args[i]} in
-      --output|--stats|--labels|--paths) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
-      --source|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads) i=$((i + 1)) ;;
+      --output|--stats|--labels|--paths|--isolines-output) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
+      --source|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads|--isolines|--isolines-at) i=$((i + 1)) ;;
       --source-point|--target-point|--path-to-point) i=$((i + 3)) ;;
       -*) ;;
       *) [ -n "$mesh" ] || mesh=${args[i]} ;;
@@ -45,7 +45,7 @@ run() {
   for o in "${outputs[@]}"; do
     if [ "$o" = - ]; then
       ! printf '%s\n' "$out" | grep -qiw nan || fail "NaN on standard output"
-    elif [ -f "$o" ] && [[ "$o" != *.npy ]]; then   # binary: checked by the npy cases
+    elif [ -f "$o" ] && [[ "$o" != *.npy && "$o" != *.ply && "$o" != *.vtk ]]; then   # binary: checked by their cases
       ! grep -qiw nan "$o" || fail "NaN in $o"
     fi
   done
@@ -895,6 +895,81 @@ TABLE
     done
     run "$data/quad.off" --quiet --source-point 0.25 0.5 3 --output "$work/d.txt"; expect_rc 0
     [ -z "$err" ] || fail "--quiet, yet: $err" ;;
+  field_files_ply_vtk)  # issue 30: the mesh with the field, for MeshLab and ParaView
+    check_field() { /usr/bin/python3 "$(dirname "$0")/field_files.py" "$@" || fail "field file $2: see above"; }
+    run "$spot" --quiet --source 3 --source 900 --output "$work/d.txt" --labels "$work/l.txt"; expect_rc 0
+    run "$spot" --quiet --source 3 --source 900 --output "$work/d.ply" --labels "$work/l2.txt"; expect_rc 0
+    check_field ply "$work/d.ply" "$spot" "$work/d.txt" "$work/l.txt"
+    cmp -s "$work/l.txt" "$work/l2.txt" || fail "the labels file changed with the PLY output"
+    run "$spot" --quiet --source 3 --source 900 --output "$work/d.vtk" --labels "$work/l2.txt"; expect_rc 0
+    check_field vtk "$work/d.vtk" "$spot" "$work/d.txt" "$work/l.txt"
+    run "$spot" --quiet --source 3 --output-format ply --output "$work/d.field"; expect_rc 0
+    run "$spot" --quiet --source 3 --output "$work/d3.txt"; expect_rc 0
+    check_field ply "$work/d.field" "$spot" "$work/d3.txt"
+    # unreached vertices: inf in distance, the largest finite distance in quality; the PLY of the
+    # run is the mesh the VTK file is compared with (the input is OFF)
+    u=$data/two_components_and_isolated_vertex.off
+    run "$u" --quiet --output "$work/u.txt" --labels "$work/ul.txt"; expect_rc 0
+    run "$u" --quiet --output "$work/u.ply" --labels "$work/ul.txt"; expect_rc 0
+    run "$u" --quiet --output "$work/u.vtk" --labels "$work/ul.txt"; expect_rc 0
+    check_field ply "$work/u.ply" "$work/u.ply" "$work/u.txt" "$work/ul.txt"
+    check_field vtk "$work/u.vtk" "$work/u.ply" "$work/u.txt" "$work/ul.txt"
+    grep -q inf "$work/u.txt" || fail "the unreachable case reaches everything" ;;
+  output_format_by_extension)  # issue 30: .npy, .ply, .vtk choose their format; --output-format overrides
+    run "$spot" --quiet --output "$work/d.txt" --labels "$work/l.txt"; expect_rc 0
+    run "$spot" --quiet --output "$work/d.npy" --labels "$work/l.npy"; expect_rc 0
+    check_npy "$work/d.npy" '<f8' 2930
+    check_npy "$work/l.npy" '<i8' 2930
+    od -An -v -td8 -j "$npy_data" "$work/l.npy" | tr -s ' ' '\n' | sed '/^$/d' > "$meta/labels.txt"
+    cmp -s "$meta/labels.txt" "$work/l.txt" || fail "npy labels differ from the text output"
+    for f in d.PLY d.Vtk; do
+      run "$spot" --quiet --output "$work/$f"; expect_rc 0
+      head -c 3 "$work/$f" | grep -q -e ply -e '# v' || fail "$f is not a field file"
+    done
+    run "$spot" --quiet --output-format text --output "$work/t.ply"; expect_rc 0
+    cmp -s "$work/t.ply" "$work/d.txt" || fail "--output-format text did not override the extension"
+    run "$spot" --quiet --output-format npy --output "$work/n.txt"; expect_rc 0
+    check_npy "$work/n.txt" '<f8' 2930
+    run "$spot" --quiet --output-format obj --output "$work/x.obj"; expect_usage_error ;;
+  isolines_obj)  # issue 30: --isolines K, --isolines-at, OBJ polylines
+    bunny=$meshes/bunny.ply
+    run "$bunny" --quiet --isolines 10 --isolines-output "$work/iso.obj" --output "$work/d.txt"; expect_rc 0
+    [ "$(grep -c '^# isoline ' "$work/iso.obj")" -eq 10 ] || fail "not one comment per isoline"
+    # bunny is closed: every piece closed, each point in one piece, indices in order
+    awk '/^v / { ++v; if (NF != 4) bad = "v line " NR } /^l / { if ($2 != n + 1 || $NF != $2 || NF < 5) bad = "l line " NR
+           for (i = 2; i < NF; ++i) if ($i != ++n) bad = "l line " NR " index " i }
+         END { if (n != v) bad = bad " " n " indices for " v " points"; if (bad) { print bad; exit 1 } }' "$work/iso.obj" ||
+      fail "the OBJ's pieces are not closed polylines over all its points"
+    [ "$(grep -c '^l ' "$work/iso.obj")" -ge 10 ] || fail "fewer pieces than isolines"
+    # the values: k / 11 of the farthest distance
+    farthest=$(sort -g "$work/d.txt" | tail -1)
+    awk -v f="$farthest" '/^# isoline / { k = $3; d = f * (k + 1) / 11; if ($6 - d > 1e-15 * d || d - $6 > 1e-15 * d) { print $0; exit 1 } }' \
+      "$work/iso.obj" || fail "the isoline values are not evenly spaced"
+    # open pieces end on the border, as the file gives them: a triangle and a lone vertex
+    run "$data/two_components_and_isolated_vertex.off" --quiet --isolines-at 0.5,2 --isolines-output "$work/t.obj"; expect_rc 0
+    [ "$(grep -v '^# dggvtp' "$work/t.obj")" = "$(printf '# isoline 0 at distance 0.5\nv 0 0.5 0\nv 0.5 0 0\nl 1 2\n# isoline 1 at distance 2')" ] ||
+      fail "isolines of the triangle: $(cat "$work/t.obj")"
+    run "$spot" --quiet --isolines 3 --isolines-output -; expect_rc 0
+    [ "$(printf '%s\n' "$out" | grep -c '^# isoline')" -eq 3 ] || fail "isolines on standard output"
+    for args in "--isolines 3" "--isolines-output $work/x.obj" "--isolines 0 --isolines-output $work/x.obj" \
+                "--isolines-at 1,nan --isolines-output $work/x.obj" "--isolines-at 1,,2 --isolines-output $work/x.obj" \
+                "--isolines 2 --isolines-at 1 --isolines-output $work/x.obj" "--isolines 2 --target 4 --isolines-output $work/x.obj" \
+                "--isolines 2 --output - --isolines-output -"; do
+      run "$spot" $args; expect_usage_error
+      [ ! -e "$work/x.obj" ] || fail "$args wrote a file"
+    done ;;
+  version_and_repeated_options)  # issue 30
+    run --version; expect_rc 0
+    [[ "$out" =~ ^dggvtp\ [0-9]+\.[0-9]+.*\ CGAL\ [0-9]+\.[0-9]+ ]] || fail "--version: $out"
+    for args in "--output $work/d.txt --output $work/e.txt" "--epsilon 0.1 --epsilon 0.1" "--precision float --precision double" \
+                "--threads 1 --threads 2" "--max-distance 1 --max-distance 2" "--output-format npy --output-format text" \
+                "--isolines 2 --isolines 3 --isolines-output $work/i.obj" "--labels $work/l.txt --labels $work/m.txt"; do
+      run "$spot" $args; expect_usage_error
+      [[ "$err" == *"more than once"* ]] || fail "$args: $err"
+      [ -z "$(ls "$work")" ] || fail "$args wrote a file"
+    done
+    # repeatable: several sources, targets, paths
+    run "$spot" --source 1 --source 2 --target 3 --target 4 --quiet; expect_rc 0 ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"
