@@ -7,6 +7,7 @@
 // or to chosen targets, and shortest paths, exact (VTP) or accuracy-controlled (DGG-VTP). The
 // command-line contract is documented in README.md and in `dggvtp --help`; scripts depend on it.
 
+#include <dggvtp/arguments.h>
 #include <dggvtp/command_line.h>
 #include <dggvtp/field_files.h>
 #include <dggvtp/isoline_file.h>
@@ -29,6 +30,7 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cerrno>
@@ -101,9 +103,17 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          distance, through the mesh's edges; edges to unreached vertices are not
                          crossed
   --stats FILE           one JSON object: sizes, times, window counts, peak memory
-  --quiet                no summary, no warnings
+  --quiet                no summary, no warnings but the one about unreachable vertices
   --help                 this text
   --version              the version of dggvtp and of CGAL
+
+Short names: -s is --source, -o is --output, -h is --help. A value may also follow its option
+after '=' (--output=d.ply, --source-point=1 2 3). An unknown option is refused with the nearest
+known one ("did you mean --source?").
+
+Vertices that no path on the surface reaches (other connected components than the sources',
+vertices no face uses) are inf, and a 'warning:' line on stderr counts them, even with --quiet
+(targets and paths likewise; not with --max-distance, which leaves vertices unreached on purpose).
 
 Targets and paths stop the propagation before the other vertices are final, so --target and
 --path-to do not combine with --output and --labels (ask for those in another run). Distances
@@ -178,16 +188,13 @@ Options parse_options(int argc, char** argv)
   dggvtp::Single_value_options single_value{"--max-distance", "--epsilon", "--precision", "--threads", "--output",
                                             "--labels", "--output-format", "--paths", "--stats", "--isolines",
                                             "--isolines-at", "--isolines-output"};
-  for(int i = 1; i < argc; ++i)
+  dggvtp::Argument_reader words(argc, argv, {{"-h", "--help"}, {"-o", "--output"}, {"-s", "--source"}}, usage_text);
+  while(words.next())
   {
-    const std::string arg = argv[i];
-    const auto value = [&]() -> std::string {
-      if(i + 1 >= argc)
-        throw Usage_error(arg + " needs a value");
-      return argv[++i];
-    };
+    const std::string arg = words.word();
+    const auto value = [&] { return words.value(); };
     single_value.check(arg);
-    if(arg == "--help" || arg == "-h")
+    if(arg == "--help")
     {
       std::cout << usage_text;
       std::exit(0);
@@ -269,6 +276,7 @@ Options parse_options(int argc, char** argv)
     else
       dggvtp::parse_mesh_argument(arg, options.mesh);
   }
+  words.finish();
   if(options.mesh.empty())
     throw Usage_error("no MESH given");
   options.check();
@@ -642,6 +650,27 @@ void write_paths(const Run& run, const Options& options)
   file.commit();
 }
 
+// What no path on the surface reaches from the sources: vertices, or targets and paths ("" when
+// all are reached). Beyond --max-distance they are unreached by request: no warning then.
+std::string unreachable_warning(const Run& run, const Options& options, std::size_t file_vertices)
+{
+  if(std::isfinite(options.max_distance))
+    return std::string();
+  const auto infinite = [](const std::vector<double>& values) {
+    return std::size_t(std::count_if(values.begin(), values.end(), [](double d) { return std::isinf(d); }));
+  };
+  const std::string why = " from the sources (inf): in other connected components than the sources', or used by no face";
+  if(options.stops_early())
+  {
+    const std::size_t n = infinite(run.target_distances) + infinite(run.path_lengths);
+    const std::size_t asked = run.target_distances.size() + run.path_lengths.size();
+    return n == 0 ? std::string()
+                  : std::to_string(n) + " of " + std::to_string(asked) + " targets and paths are unreachable" + why;
+  }
+  const std::size_t n = infinite(run.distances);
+  return n == 0 ? std::string()
+                : std::to_string(n) + " of " + std::to_string(file_vertices) + " vertices are unreachable" + why;
+}
 
 int run_main(int argc, char** argv)
 {
@@ -689,6 +718,10 @@ int run_main(int argc, char** argv)
   if(!options.quiet)
     for(const std::string& warning : run.warnings)
       std::cerr << "warning: " << warning << "\n";
+  // even with --quiet: a scan in pieces or a stray vertex is worth knowing before using the numbers
+  const std::string unreachable = unreachable_warning(run, options, soup.file_vertices);
+  if(!unreachable.empty())
+    std::cerr << "warning: " << unreachable << "\n";
 #ifndef CGAL_LINKED_WITH_TBB
   if(!options.quiet && options.threads != 1)
     std::cerr << "warning: dggvtp was built without TBB: the propagation ran on one thread\n";

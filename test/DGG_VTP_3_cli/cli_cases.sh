@@ -24,8 +24,9 @@ run() {
   local args=("$@") outputs=() mesh="" i
   for ((i = 0; i < ${#args[@]}; ++i)); do
     case ${args[i]} in
-      --output|--stats|--labels|--paths|--isolines-output) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
-      --source|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads|--isolines|--isolines-at) i=$((i + 1)) ;;
+      --output|-o|--stats|--labels|--paths|--isolines-output) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
+      --output=*|--stats=*|--labels=*|--paths=*|--isolines-output=*) outputs+=("${args[i]#*=}") ;;
+      --source|-s|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads|--isolines|--isolines-at) i=$((i + 1)) ;;
       --source-point|--target-point|--path-to-point) i=$((i + 3)) ;;
       -*) ;;
       *) [ -n "$mesh" ] || mesh=${args[i]} ;;
@@ -171,7 +172,8 @@ case $case in
     [[ "$out" == usage:\ dggvtp* ]] || fail "no usage text"
     [[ "$out" == *"Input policy"* ]] || fail "the help does not state the input policy" ;;
   no_mesh) run; expect_usage_error ;;
-  unknown_option) run "$spot" --frobnicate; expect_usage_error ;;
+  unknown_option) run "$spot" --frobnicate; expect_usage_error
+    [[ "$err" != *"did you mean"* ]] || fail "a suggestion for --frobnicate: $err" ;;
   missing_value) run "$spot" --source; expect_usage_error ;;
   bad_numbers)
     for args in "--source -1" "--source 1x" "--epsilon -1" "--epsilon nan" "--epsilon abc" "--threads two" "--precision half"; do
@@ -778,7 +780,9 @@ PY
     while read -r expected args; do
       [ -n "$expected" ] || continue
       rm -f "$work"/*.txt "$work"/*.json "$work"/*.obj "$work"/*.npy
-      words=(); for w in $args; do w=${w/#MESH/$work/b.off}; w=${w/#W\//$work/}; words+=("${w/#X\//$work/missing/}"); done
+      words=(); for w in $args; do
+        w=${w/#MESH/$work/b.off}; w=${w/#W\//$work/}; w=${w/=W\//=$work/}; w=${w/#X\//$work/missing/}; words+=("${w/=X\//=$work/missing/}")
+      done
       run "${words[@]}"
       [ "$rc" -eq "$expected" ] || fail "$args: exit status $rc, expected $expected; stderr: $err"
       if [ "$expected" -ne 0 ]; then
@@ -863,6 +867,23 @@ PY
 2 MESH --stats X/s.json
 0 MESH --quiet
 0 --help
+0 -h
+0 MESH -s 5
+0 MESH --source=5
+1 MESH --source=
+1 MESH --source=-1
+2 MESH --source=143
+1 MESH -s
+0 MESH --source-point=1 1 0
+0 MESH -o W/d.txt
+0 MESH --output=W/d.txt
+1 MESH --output=
+2 MESH --output=X/d.txt
+1 MESH --quiet=yes
+1 MESH --exact=1
+1 MESH --sourse 5
+1 MESH --Source 5
+1 MESH -x
 TABLE
     ;;
   outputs_checked_before_loading)
@@ -970,6 +991,49 @@ TABLE
     done
     # repeatable: several sources, targets, paths
     run "$spot" --source 1 --source 2 --target 3 --target 4 --quiet; expect_rc 0 ;;
+  short_options_and_equals)  # issue 30: -s, -o and --opt=value read as --source N, --output FILE
+    run "$spot" --quiet --source 5 --source-point 0.1 0.2 0.3 --output "$work/ref.txt"; expect_rc 0
+    for args in "-s 5 --source-point 0.1 0.2 0.3 -o $work/d.txt" "--source=5 --source-point=0.1 0.2 0.3 --output=$work/d.txt"; do
+      rm -f "$work/d.txt"
+      run "$spot" --quiet $args; expect_rc 0
+      cmp -s "$work/ref.txt" "$work/d.txt" || fail "$args: not the bytes of --source 5 --output"
+    done
+    run "$spot" --quiet -o="$work/e.txt"; expect_usage_error   # '=' belongs to long options only
+    [ ! -e "$work/e.txt" ] || fail "-o=FILE wrote a file"
+    run "$spot" --quiet --source 5 --output "$work/five.txt"; expect_rc 0
+    run "$spot" --quiet --source 5 --output=-; expect_rc 0
+    [ "$out" = "$(cat "$work/five.txt")" ] || fail "--output=- is not standard output"
+    for args in "--quiet=yes" "--exact=1" "--output=" "--source=" "--epsilon=" "--source=1x"; do
+      run "$spot" --source 5 $args; expect_usage_error
+    done
+    run "$spot" --source 5 --quiet=yes; [[ "$err" == *"--quiet takes no value"* ]] || fail "$err" ;;
+  unknown_option_suggests)  # issue 30: the nearest known option, when one is near
+    for pair in --sources:--source --sourse:--source --soruce:--source --outptu:--output -output:--output --Output:--output \
+                --labesl=l.txt:--labels --isoline:--isolines --max-distanse:--max-distance; do
+      given=${pair%%:*}
+      run "$spot" "$given" 1; expect_usage_error
+      [ "$err" = "error: unknown option ${given%%=*} (did you mean ${pair##*:}?) (see dggvtp --help)" ] || fail "$given: $err"
+    done
+    for bad in --frobnicate --xyz -q --thread-count; do
+      run "$spot" "$bad" 1; expect_usage_error
+      [[ "$err" == "error: unknown option $bad"* && "$err" != *"did you mean"* ]] || fail "$bad: $err"
+    done ;;
+  unreachable_warns)  # issue 30: a warning that counts unreachable vertices, even with --quiet
+    u=$data/two_components_and_isolated_vertex.off   # triangles 0 1 2 and 4 5 6, vertex 3 alone
+    for q in "" --quiet; do
+      run "$u" $q --output "$work/d.txt"; expect_rc 0
+      printf '%s\n' "$err" | grep -qx "warning: 4 of 7 vertices are unreachable from the sources (inf): in other connected components than the sources', or used by no face" ||
+        fail "no count of the unreachable vertices ($q): $err"
+      [ "$(grep -c inf "$work/d.txt")" -eq 4 ] || fail "not 4 inf"
+    done
+    run "$u" --quiet --source 0 --source 4 --output "$work/d.txt"; expect_rc 0
+    [[ "$err" == "warning: 1 of 7 vertices are unreachable"* ]] || fail "two components' sources: $err"
+    run "$u" --quiet --source 1 --target 2 --target 4 --path-to 5; expect_rc 0
+    [[ "$err" == "warning: 2 of 3 targets and paths are unreachable"* ]] || fail "targets: $err"
+    run "$u" --quiet --max-distance 10 --output "$work/d.txt"; expect_rc 0
+    [ -z "$err" ] || fail "a warning though --max-distance leaves vertices unreached on purpose: $err"
+    run "$spot" --quiet --output "$work/d.txt"; expect_rc 0
+    [ -z "$err" ] || fail "a warning on a connected mesh: $err" ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"
