@@ -17,6 +17,7 @@
 #include <dggvtp/npy.h>
 #include <dggvtp/output_paths.h>
 #include <dggvtp/query_places.h>
+#include <dggvtp/repair.h>
 
 #include <CGAL/DGG_VTP_3.h>
 #include <CGAL/Simple_cartesian.h>
@@ -103,6 +104,16 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          distance, through the mesh's edges; edges to unreached vertices are not
                          crossed
   --stats FILE           one JSON object: sizes, times, window counts, peak memory
+  --repair               repair the mesh with CGAL's Polygon_mesh_processing before the input
+                         checks: stitch_borders (coincident border edges), remove_degenerate_faces
+                         (zero length edges, zero area), remove_almost_degenerate_faces (angles
+                         within 0.1 degree of flat, edges 1e4 times shorter than their face's
+                         longest and under 1e-4 of the bounding box's diagonal) and
+                         remove_isolated_vertices; one 'warning:' line per kind of repair with
+                         its counts. Results stay per vertex of the file: a vertex merged with
+                         another at its place takes its distance and label, a removed one is nan
+                         (label -1); a source or target there is one on the vertex it merged with,
+                         and an error where it was removed
   --quiet                no summary, no warnings but the one about unreachable vertices
   --help                 this text
   --version              the version of dggvtp and of CGAL
@@ -172,6 +183,7 @@ struct Options : dggvtp::Propagation_options
   std::vector<double> isolines_at;
   std::string isolines_output;
   bool quiet = false;
+  bool repair = false;
 
   // targets and paths end the propagation early
   bool stops_early() const { return !targets.empty() || !path_targets.empty(); }
@@ -273,6 +285,8 @@ Options parse_options(int argc, char** argv)
     }
     else if(arg == "--quiet")
       options.quiet = true;
+    else if(arg == "--repair")
+      options.repair = true;
     else
       dggvtp::parse_mesh_argument(arg, options.mesh);
   }
@@ -699,6 +713,16 @@ int run_main(int argc, char** argv)
       if(!p.is_point && p.vertex >= soup.file_vertices)
         throw dggvtp::Input_error(std::string(what) + " " + std::to_string(p.vertex) + " is out of range (the mesh has " +
                                   std::to_string(soup.file_vertices) + " vertices)");
+  dggvtp::Repair_record repaired;
+  if(options.repair)
+  {
+    repaired = dggvtp::repair_soup(soup);
+    for(auto [places, what] : {std::make_pair(&options.sources, "source"), std::make_pair(&options.targets, "target"),
+                               std::make_pair(&options.path_targets, "path target")})
+      for(Place& p : *places)
+        if(!p.is_point)
+          p.vertex = repaired.file_vertex(p.vertex, what);
+  }
   const double seconds_read = seconds_since(t0);
 
   Run run;
@@ -709,8 +733,15 @@ int run_main(int argc, char** argv)
   }
   catch(const std::invalid_argument& e) // the library's documented preconditions
   {
-    throw dggvtp::Input_error(e.what());
+    // the faces that CGAL's repairs may fix: the library's messages for them
+    const std::string what = e.what();
+    const bool repairable = what.find(" is degenerate") != std::string::npos ||
+                            what.find(" is a sliver") != std::string::npos ||
+                            what.find(" has an edge of length") != std::string::npos;
+    throw dggvtp::Input_error(what + (!repairable ? "" : options.repair ? " (after --repair)"
+                                                                        : "; --repair removes such faces"));
   }
+  repaired.apply(run.distances, run.labels);
   const double seconds_load = seconds_read + run.seconds_make_mesh;
   if(!options.quiet)
     for(const std::string& repair : soup.repairs)
@@ -738,7 +769,7 @@ int run_main(int argc, char** argv)
   if(!options.isolines_output.empty())
   {
     Output_file file(options.isolines_output);
-    dggvtp::write_isolines_obj(file.get(), options.mesh, run.distances,
+    dggvtp::write_isolines_obj(file.get(), options.mesh, options.repair, run.distances,
                                options.isolines > 0 ? dggvtp::evenly_spaced_values(run.distances, options.isolines)
                                                     : options.isolines_at);
     file.commit();
