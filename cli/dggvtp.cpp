@@ -7,6 +7,7 @@
 // or to chosen targets, and shortest paths, exact (VTP) or accuracy-controlled (DGG-VTP). The
 // command-line contract is documented in README.md and in `dggvtp --help`; scripts depend on it.
 
+#include <dggvtp/arguments.h>
 #include <dggvtp/command_line.h>
 #include <dggvtp/field_files.h>
 #include <dggvtp/isoline_file.h>
@@ -16,6 +17,7 @@
 #include <dggvtp/npy.h>
 #include <dggvtp/output_paths.h>
 #include <dggvtp/query_places.h>
+#include <dggvtp/repair.h>
 
 #include <CGAL/DGG_VTP_3.h>
 #include <CGAL/Simple_cartesian.h>
@@ -29,6 +31,7 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cerrno>
@@ -101,9 +104,27 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          distance, through the mesh's edges; edges to unreached vertices are not
                          crossed
   --stats FILE           one JSON object: sizes, times, window counts, peak memory
-  --quiet                no summary, no warnings
+  --repair               repair the mesh with CGAL's Polygon_mesh_processing before the input
+                         checks: stitch_borders (coincident border edges), remove_degenerate_faces
+                         (zero length edges, zero area), remove_almost_degenerate_faces (angles
+                         within 0.1 degree of flat, edges 1e4 times shorter than their face's
+                         longest and under 1e-4 of the bounding box's diagonal) and
+                         remove_isolated_vertices; one 'warning:' line per kind of repair with
+                         its counts. Results stay per vertex of the file: a vertex merged with
+                         another at its place takes its distance and label, a removed one is nan
+                         (label -1); a source or target there is one on the vertex it merged with,
+                         and an error where it was removed
+  --quiet                no summary, no warnings but the one about unreachable vertices
   --help                 this text
   --version              the version of dggvtp and of CGAL
+
+Short names: -s is --source, -o is --output, -h is --help. A value may also follow its option
+after '=' (--output=d.ply, --source-point=1 2 3). An unknown option is refused with the nearest
+known one ("did you mean --source?").
+
+Vertices that no path on the surface reaches (other connected components than the sources',
+vertices no face uses) are inf, and a 'warning:' line on stderr counts them, even with --quiet
+(targets and paths likewise; not with --max-distance, which leaves vertices unreached on purpose).
 
 Targets and paths stop the propagation before the other vertices are final, so --target and
 --path-to do not combine with --output and --labels (ask for those in another run). Distances
@@ -162,6 +183,7 @@ struct Options : dggvtp::Propagation_options
   std::vector<double> isolines_at;
   std::string isolines_output;
   bool quiet = false;
+  bool repair = false;
 
   // targets and paths end the propagation early
   bool stops_early() const { return !targets.empty() || !path_targets.empty(); }
@@ -178,16 +200,13 @@ Options parse_options(int argc, char** argv)
   dggvtp::Single_value_options single_value{"--max-distance", "--epsilon", "--precision", "--threads", "--output",
                                             "--labels", "--output-format", "--paths", "--stats", "--isolines",
                                             "--isolines-at", "--isolines-output"};
-  for(int i = 1; i < argc; ++i)
+  dggvtp::Argument_reader words(argc, argv, {{"-h", "--help"}, {"-o", "--output"}, {"-s", "--source"}}, usage_text);
+  while(words.next())
   {
-    const std::string arg = argv[i];
-    const auto value = [&]() -> std::string {
-      if(i + 1 >= argc)
-        throw Usage_error(arg + " needs a value");
-      return argv[++i];
-    };
+    const std::string arg = words.word();
+    const auto value = [&] { return words.value(); };
     single_value.check(arg);
-    if(arg == "--help" || arg == "-h")
+    if(arg == "--help")
     {
       std::cout << usage_text;
       std::exit(0);
@@ -266,9 +285,12 @@ Options parse_options(int argc, char** argv)
     }
     else if(arg == "--quiet")
       options.quiet = true;
+    else if(arg == "--repair")
+      options.repair = true;
     else
       dggvtp::parse_mesh_argument(arg, options.mesh);
   }
+  words.finish();
   if(options.mesh.empty())
     throw Usage_error("no MESH given");
   options.check();
@@ -642,6 +664,27 @@ void write_paths(const Run& run, const Options& options)
   file.commit();
 }
 
+// What no path on the surface reaches from the sources: vertices, or targets and paths ("" when
+// all are reached). Beyond --max-distance they are unreached by request: no warning then.
+std::string unreachable_warning(const Run& run, const Options& options, std::size_t file_vertices)
+{
+  if(std::isfinite(options.max_distance))
+    return std::string();
+  const auto infinite = [](const std::vector<double>& values) {
+    return std::size_t(std::count_if(values.begin(), values.end(), [](double d) { return std::isinf(d); }));
+  };
+  const std::string why = " from the sources (inf): in other connected components than the sources', or used by no face";
+  if(options.stops_early())
+  {
+    const std::size_t n = infinite(run.target_distances) + infinite(run.path_lengths);
+    const std::size_t asked = run.target_distances.size() + run.path_lengths.size();
+    return n == 0 ? std::string()
+                  : std::to_string(n) + " of " + std::to_string(asked) + " targets and paths are unreachable" + why;
+  }
+  const std::size_t n = infinite(run.distances);
+  return n == 0 ? std::string()
+                : std::to_string(n) + " of " + std::to_string(file_vertices) + " vertices are unreachable" + why;
+}
 
 int run_main(int argc, char** argv)
 {
@@ -670,6 +713,16 @@ int run_main(int argc, char** argv)
       if(!p.is_point && p.vertex >= soup.file_vertices)
         throw dggvtp::Input_error(std::string(what) + " " + std::to_string(p.vertex) + " is out of range (the mesh has " +
                                   std::to_string(soup.file_vertices) + " vertices)");
+  dggvtp::Repair_record repaired;
+  if(options.repair)
+  {
+    repaired = dggvtp::repair_soup(soup);
+    for(auto [places, what] : {std::make_pair(&options.sources, "source"), std::make_pair(&options.targets, "target"),
+                               std::make_pair(&options.path_targets, "path target")})
+      for(Place& p : *places)
+        if(!p.is_point)
+          p.vertex = repaired.file_vertex(p.vertex, what);
+  }
   const double seconds_read = seconds_since(t0);
 
   Run run;
@@ -680,8 +733,15 @@ int run_main(int argc, char** argv)
   }
   catch(const std::invalid_argument& e) // the library's documented preconditions
   {
-    throw dggvtp::Input_error(e.what());
+    // the faces that CGAL's repairs may fix: the library's messages for them
+    const std::string what = e.what();
+    const bool repairable = what.find(" is degenerate") != std::string::npos ||
+                            what.find(" is a sliver") != std::string::npos ||
+                            what.find(" has an edge of length") != std::string::npos;
+    throw dggvtp::Input_error(what + (!repairable ? "" : options.repair ? " (after --repair)"
+                                                                        : "; --repair removes such faces"));
   }
+  repaired.apply(run.distances, run.labels);
   const double seconds_load = seconds_read + run.seconds_make_mesh;
   if(!options.quiet)
     for(const std::string& repair : soup.repairs)
@@ -689,6 +749,10 @@ int run_main(int argc, char** argv)
   if(!options.quiet)
     for(const std::string& warning : run.warnings)
       std::cerr << "warning: " << warning << "\n";
+  // even with --quiet: a scan in pieces or a stray vertex is worth knowing before using the numbers
+  const std::string unreachable = unreachable_warning(run, options, soup.file_vertices);
+  if(!unreachable.empty())
+    std::cerr << "warning: " << unreachable << "\n";
 #ifndef CGAL_LINKED_WITH_TBB
   if(!options.quiet && options.threads != 1)
     std::cerr << "warning: dggvtp was built without TBB: the propagation ran on one thread\n";
@@ -705,7 +769,7 @@ int run_main(int argc, char** argv)
   if(!options.isolines_output.empty())
   {
     Output_file file(options.isolines_output);
-    dggvtp::write_isolines_obj(file.get(), options.mesh, run.distances,
+    dggvtp::write_isolines_obj(file.get(), options.mesh, options.repair, run.distances,
                                options.isolines > 0 ? dggvtp::evenly_spaced_values(run.distances, options.isolines)
                                                     : options.isolines_at);
     file.commit();

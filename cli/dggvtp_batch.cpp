@@ -29,6 +29,7 @@
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/npy.h>
 #include <dggvtp/output_paths.h>
+#include <dggvtp/arguments.h>
 #include <dggvtp/single_value_options.h>
 #include <dggvtp/version.h>
 
@@ -47,6 +48,7 @@
 #include <tbb/task_arena.h>
 #endif
 
+#include <algorithm>
 #include <atomic>
 #include <charconv>
 #include <cerrno>
@@ -65,6 +67,7 @@
 #include <memory>
 #include <mutex>
 #include <new>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -107,9 +110,16 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
                          process its peak memory, CPU time and time on its own rows
   --progress             rows done / total, rate and time left on stderr (the default when
                          stderr is a terminal; under mpirun, whose output is a pipe, ask for it)
-  --quiet                no summary, no warnings, no progress
+  --quiet                no summary, no progress, no warnings but the one about unreachable
+                         vertices
   --help                 this text
   --version              the version of dggvtp-batch and of CGAL
+
+Short names: -s is --sources, -o is --output, -h is --help. A value may also follow its option
+after '=' (--sources=fps:10). An unknown option is refused with the nearest known one ("did you
+mean --sources?"). Rows that leave vertices unreachable (inf: other connected components than
+the row's source, vertices no face uses) are counted in a 'warning:' line on stderr, even with
+--quiet.
 
 Before the mesh is loaded, every output (--output, --checkpoint, --sources-output, --stats) is
 checked to be writable; before the first row, the file's size (rows x vertices x 4 or 8 bytes,
@@ -167,22 +177,19 @@ Options parse_options(int argc, char** argv)
   Options options;
   dggvtp::Single_value_options single_value{"--sources", "--output", "--checkpoint", "--sources-output", "--stats",
                                             "--dtype", "--epsilon", "--precision", "--threads"};
-  for(int i = 1; i < argc; ++i)
+  dggvtp::Argument_reader words(argc, argv, {{"-h", "--help"}, {"-o", "--output"}, {"-s", "--sources"}}, usage_text);
+  while(words.next())
   {
-    const std::string arg = argv[i];
+    const std::string arg = words.word();
     single_value.check(arg);
-    const auto value = [&]() -> std::string {
-      if(i + 1 >= argc)
-        throw Usage_error(arg + " needs a value");
-      return argv[++i];
-    };
+    const auto value = [&] { return words.value(); };
     const auto name = [&]() -> std::string {
       std::string v = value();
       if(v.empty())
         throw Usage_error(arg + " needs a file name");
       return v;
     };
-    if(arg == "--help" || arg == "-h" || arg == "--version")
+    if(arg == "--help" || arg == "--version")
     {
       options.help = true;
       options.version = arg == "--version";
@@ -228,6 +235,7 @@ Options parse_options(int argc, char** argv)
     else
       dggvtp::parse_mesh_argument(arg, options.mesh);
   }
+  words.finish();
   if(options.mesh.empty())
     throw Usage_error("no MESH given");
   if(options.sources.empty())
@@ -946,6 +954,24 @@ int collectively(const dggvtp::Communicator& comm, const std::function<void()>& 
   return comm.max(status);
 }
 
+// The rows that leave vertices unreachable (inf), counted as they are computed, for one warning.
+struct Unreachable_count
+{
+  std::atomic<std::size_t> rows{0}; // rows with an inf
+  std::atomic<std::size_t> most{0}; // the most infs in one row
+
+  void add(const std::vector<double>& row)
+  {
+    const std::size_t n = std::size_t(std::count_if(row.begin(), row.end(), [](double d) { return std::isinf(d); }));
+    if(n == 0)
+      return;
+    ++rows;
+    for(std::size_t m = most.load(); m < n && !most.compare_exchange_weak(m, n);)
+    {
+    }
+  }
+};
+
 struct Phase_one
 {
   Options options;
@@ -1046,6 +1072,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     return status;
   const Clock::time_point t_compute = Clock::now();
   std::size_t computed = 0; // by this rank
+  Unreachable_count unreachable; // of this rank's rows
   double seconds_own = 0.;  // this rank's rows, without waiting for the others
   try
   {
@@ -1088,6 +1115,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
 #endif
             row = one.prepared.row(v, threads != 1);
           }
+          unreachable.add(row);
           chosen[v] = 1;
           state.chosen.push_back(v);
           for(std::size_t i = 0; i < row.size(); ++i)
@@ -1138,6 +1166,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
         file_vertices.push_back(sources.vertices[r]);
       one.prepared.rows(file_vertices, threads, [&](std::size_t i, const std::vector<double>& row) {
         thread_local std::vector<char> bytes;
+        unreachable.add(row);
         encode_row(row, options.dtype, bytes);
         sink.write(mine[i], bytes);
       });
@@ -1166,6 +1195,8 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   const std::vector<double> cpu = comm.gather(cpu_seconds());
   const std::vector<double> compute_seconds = comm.gather(seconds_own);
   const std::vector<double> computed_per_rank = comm.gather(double(computed));
+  const std::vector<double> unreachable_rows = comm.gather(double(unreachable.rows.load()));
+  const std::vector<double> unreachable_most = comm.gather(double(unreachable.most.load()));
   status = collectively(comm, [&] {
     if(!root)
       return;
@@ -1193,6 +1224,13 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   std::size_t computed_total = 0;
   for(double c : computed_per_rank)
     computed_total += std::size_t(c);
+  // even with --quiet: a scan in pieces or a stray vertex is worth knowing before using the rows
+  const double rows_unreachable = std::accumulate(unreachable_rows.begin(), unreachable_rows.end(), 0.);
+  if(rows_unreachable > 0.)
+    std::cerr << "warning: " << std::size_t(rows_unreachable) << " of the " << computed_total
+              << " rows computed leave vertices unreachable (inf), up to "
+              << std::size_t(*std::max_element(unreachable_most.begin(), unreachable_most.end())) << " of " << one.file_vertices
+              << " in a row: in other connected components than the row's source, or used by no face\n";
   const double seconds_total = seconds_since(t_start);
   const auto json_list = [](const std::vector<double>& values, const char* format) {
     std::string out;

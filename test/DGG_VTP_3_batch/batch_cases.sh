@@ -330,6 +330,15 @@ exit_code_table)
 0 MESH --sources s.txt --output o.npy --progress
 0 MESH --sources s.txt --output o.npy --quiet
 0 --help
+0 -h
+0 MESH -s s.txt -o o.npy
+0 MESH --sources=s.txt --output=o.npy
+0 MESH --sources=fps:2 --output=o.npy --dtype=f4
+1 MESH --sources= --output o.npy
+1 MESH --sources s.txt --output=
+1 MESH --sources s.txt --output o.npy --quiet=1
+1 MESH --source s.txt --output o.npy
+1 MESH --sources s.txt --outptu o.npy
 TABLE
   ;;
 outputs_checked_before_loading)
@@ -386,6 +395,39 @@ version_and_repeated_options)  # issue 30
   echo 0 > one.txt
   run "$spot" --sources one.txt --output out.npy --quiet
   [ "$rc" -eq 0 ] || fail "one of each option: exit status $rc: $err"
+  ;;
+option_spellings)  # issue 30: -s, -o, --opt=value; an unknown option names the nearest known one
+  grid > grid.obj
+  run grid.obj --sources fps:3 --output ref.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  run grid.obj -s fps:3 -o short.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  run grid.obj --sources=fps:3 --output=equals.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  cmp -s ref.npy short.npy && cmp -s ref.npy equals.npy || fail "the spellings give other bytes"
+  for pair in --source:--sources --sourcse:--sources --outptu:--output --dtpye:--dtype -checkpoint:--checkpoint; do
+    run grid.obj "${pair%%:*}" x --sources all --output o.npy; expect_usage_error
+    [ "$err" = "error: unknown option ${pair%%:*} (did you mean ${pair##*:}?) (see dggvtp-batch --help)" ] || fail "${pair%%:*}: $err"
+  done
+  run grid.obj --frobnicate --sources all --output o.npy; expect_usage_error
+  [[ "$err" != *"did you mean"* ]] || fail "a suggestion for --frobnicate: $err"
+  run grid.obj --sources all --output o.npy --progress=yes; expect_usage_error
+  [[ "$err" == *"--progress takes no value"* ]] || fail "$err"
+  [ ! -e o.npy ] || fail "a refused command wrote o.npy"
+  ;;
+unreachable_warns)  # issue 30: rows with inf are counted in a warning, even with --quiet
+  # triangles 0 1 2 and 4 5 6, vertex 3 alone
+  printf 'OFF\n7 2 0\n0 0 0\n1 0 0\n0 1 0\n5 5 5\n10 0 0\n11 0 0\n10 1 0\n3 0 1 2\n3 4 5 6\n' > u.off
+  for q in "" --quiet; do
+    run u.off --sources all --output o.npy $q; [ "$rc" -eq 0 ] || fail "$err"
+    printf '%s\n' "$err" | grep -qx "warning: 7 of the 7 rows computed leave vertices unreachable (inf), up to 6 of 7 in a row: in other connected components than the row's source, or used by no face" ||
+      fail "no count of the rows with unreachable vertices ($q): $err"
+    rm o.npy
+  done
+  printf '0 5\n' > two.txt
+  run u.off --sources two.txt --output o.npy --quiet --threads 2; [ "$rc" -eq 0 ] || fail "$err"
+  [[ "$err" == "warning: 2 of the 2 rows computed leave vertices unreachable (inf), up to 4 of 7 in a row"* ]] || fail "$err"
+  run u.off --sources fps:2 --output f.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  [[ "$err" == "warning: 2 of the 2 rows computed"* ]] || fail "fps: $err"
+  run "$spot" --sources fps:2 --output s.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  [ -z "$err" ] || fail "a warning on a connected mesh: $err"
   ;;
 *)
   fail "unknown case"

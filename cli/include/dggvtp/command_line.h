@@ -87,11 +87,9 @@ struct Propagation_options
   }
 };
 
-// An argument that is no option: the MESH, given once.
+// An argument that is no option (Argument_reader refused the unknown ones): the MESH, given once.
 inline void parse_mesh_argument(const std::string& arg, std::string& mesh)
 {
-  if(arg.size() > 1 && arg[0] == '-')
-    throw Usage_error("unknown option " + arg);
   if(!mesh.empty())
     throw Usage_error("more than one MESH given ('" + mesh + "' and '" + arg + "')");
   mesh = arg;

@@ -9,6 +9,7 @@
 #define DGGVTP_ISOLINE_FILE_H
 
 #include <dggvtp/load_mesh.h>
+#include <dggvtp/repair.h>
 
 #include <CGAL/DGG_VTP_3/isolines.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -41,13 +42,15 @@ inline std::vector<double> evenly_spaced_values(const std::vector<double>& dista
 // Writes the isolines of `distances` (per vertex of the file `mesh_path`, which is read again) at
 // `values` as OBJ: per value a comment, then per piece its points as v lines and one l line
 // through them; a closed piece repeats its first vertex at the end of its l line. The field is
-// interpolated on the triangles the solver gets (polygons triangulated, orientations fixed); a
-// vertex split there takes the distance of its file vertex.
-inline void write_isolines_obj(std::FILE* file, const std::string& mesh_path, const std::vector<double>& distances,
-                               const std::vector<double>& values)
+// interpolated on the triangles the solver gets (polygons triangulated, orientations fixed, and
+// with `repair` the repairs of --repair); a vertex split there takes the distance of its file vertex.
+inline void write_isolines_obj(std::FILE* file, const std::string& mesh_path, bool repair,
+                               const std::vector<double>& distances, const std::vector<double>& values)
 {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   Loaded_soup soup = load_soup(mesh_path);
+  if(repair)
+    repair_soup(soup);
   auto mesh = make_triangle_mesh<Kernel>(soup);
   using Mesh = decltype(mesh);
   if(num_vertices(mesh) != soup.file_vertex_of.size())
