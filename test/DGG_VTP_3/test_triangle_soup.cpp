@@ -127,6 +127,16 @@ BOOST_AUTO_TEST_CASE(refused_soups)
   require_refused(soup, std::vector<std::array<std::size_t, 3>>{{{0, 1, 2}}, {{2, 1, 3}}}, "not finite");
   soup.points[3] = {0.5, 0.5, 0.};
   require_refused(soup, std::vector<std::array<std::size_t, 3>>{{{0, 1, 2}}, {{2, 1, 3}}}, "degenerate");
+  // coordinates that a double holds but whose squares or spans overflow (the fuzzer's NaN cell)
+  Soup huge = two_triangles();
+  for(auto& p : huge.points)
+    for(double& x : p)
+      x *= 1e200;
+  require_refused(huge, huge.faces, "too large for the number type");
+  huge.points = {{-1.7e308, 0., 0.}, {-1.7e308, 1e300, 0.}, {-1.7e308, 0., 1e300},
+                 {1.7e308, 0., 0.},  {1.7e308, 1e300, 0.},  {1.7e308, 0., 1e300}};
+  require_refused(huge, std::vector<std::array<std::size_t, 3>>{{{0, 1, 2}}, {{3, 4, 5}}},
+                  "span more than the largest finite double");
 }
 
 BOOST_AUTO_TEST_CASE(pinched_vertex_is_kept)

@@ -198,6 +198,10 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   const std::size_t nf = corner_vertex.size() / 3;
   double extent = 0.;
   const std::vector<Index> order = faces_in_space_order(xyz, corner_vertex, extent);
+  // otherwise every edge would be refused as too short for a mesh "inf across"
+  if(!std::isfinite(extent))
+    throw std::invalid_argument("the vertices span more than the largest finite double: "
+                                "scale the mesh down (distances scale with it)");
   reorder_faces(order, corner_vertex, opposite);
   out.m_corner_vertex.swap(corner_vertex);
   // corners around each vertex (CSR); the faces' spatial order makes walking them cache-friendly
@@ -225,6 +229,11 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
     const auto degenerate = [user_face] {
       return std::invalid_argument("face " + std::to_string(user_face) + " is degenerate (zero length edge or zero area)");
     };
+    const auto too_large = [user_face] {
+      return std::invalid_argument("face " + std::to_string(user_face) +
+                                   " is too large for the number type (its squared edge lengths or area overflow): "
+                                   "scale the mesh down (distances scale with it)");
+    };
     FT twice_area(0), longest(0);
     for(int k = 0; k < 3; ++k)
     {
@@ -240,7 +249,9 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
       out.m_apex_x[hi] = corner_dot / len;
       if constexpr(Number_type_math<FT>::is_exact)
         out.m_corner_dot[hi] = corner_dot;
-      if(!(len > FT(0)) || !CGAL::is_finite(len) || !CGAL::is_finite(out.m_apex_x[hi]))
+      if(!CGAL::is_finite(len))
+        throw too_large();
+      if(!(len > FT(0)) || !CGAL::is_finite(out.m_apex_x[hi]))
         throw degenerate();
       if(CGAL::to_double(len) < shortest_accepted)
         throw std::invalid_argument("face " + std::to_string(user_face) + " has an edge of length " +
@@ -260,7 +271,9 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
       }
     }
     out.m_twice_area[fi] = twice_area;
-    if(!(twice_area > FT(0)) || !CGAL::is_finite(twice_area) || !CGAL::is_finite(twice_area / longest))
+    if(!CGAL::is_finite(twice_area))
+      throw too_large();
+    if(!(twice_area > FT(0)) || !CGAL::is_finite(twice_area / longest))
       throw degenerate();
     // longest / height on it = longest^2 / (2 area)
     if(longest > Tuning<FT>::max_sliver_ratio() * (twice_area / longest))

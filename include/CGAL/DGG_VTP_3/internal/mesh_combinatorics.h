@@ -102,7 +102,9 @@ std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
     std::uint64_t key = 0;
     for(int c = 0; c < 3; ++c)
     {
-      const double cell = (std::min)((std::max)((centroid[c] - low[c]) * scale, 0.), double((1 << 21) - 1));
+      // written so that a NaN (a box too large for a double: inf times a zero scale) gives cell 0
+      const double t = (centroid[c] - low[c]) * scale;
+      const double cell = t > 0. ? (std::min)(t, double((1 << 21) - 1)) : 0.;
       key |= spread(std::uint64_t(cell)) << c;
     }
     keys[f] = {key, std::uint32_t(f)};
