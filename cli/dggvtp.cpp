@@ -16,6 +16,7 @@
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/npy.h>
 #include <dggvtp/output_paths.h>
+#include <dggvtp/progress_line.h>
 #include <dggvtp/query_places.h>
 #include <dggvtp/repair.h>
 
@@ -41,6 +42,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <new>
@@ -114,7 +116,12 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          another at its place takes its distance and label, a removed one is nan
                          (label -1); a source or target there is one on the vertex it merged with,
                          and an error where it was removed
-  --quiet                no summary, no warnings but the one about unreachable vertices
+  --progress             the progress line on stderr (percentage of the vertices final, time
+                         elapsed and left) from the start of the propagation, also when stderr is
+                         not a terminal (then one line a second); on a terminal it shows anyway
+                         once the propagation has taken a second
+  --quiet                no summary, no progress, no warnings but the one about unreachable
+                         vertices
   --help                 this text
   --version              the version of dggvtp and of CGAL
 
@@ -184,6 +191,7 @@ struct Options : dggvtp::Propagation_options
   std::string isolines_output;
   bool quiet = false;
   bool repair = false;
+  bool progress = false; // the progress line from the start, on any stderr
 
   // targets and paths end the propagation early
   bool stops_early() const { return !targets.empty() || !path_targets.empty(); }
@@ -287,6 +295,8 @@ Options parse_options(int argc, char** argv)
       options.quiet = true;
     else if(arg == "--repair")
       options.repair = true;
+    else if(arg == "--progress")
+      options.progress = true;
     else
       dggvtp::parse_mesh_argument(arg, options.mesh);
   }
@@ -470,7 +480,11 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
   std::vector<FT> at_targets;
   using Tree = decltype(solver.compute_shortest_path_tree(q.sources));
   std::optional<Tree> tree;
-  const auto np = DP::max_distance(options.max_distance).accuracy(options.epsilon);
+  std::optional<dggvtp::Progress_line> line;
+  std::function<bool(double)> progress; // empty: no callback
+  if(!options.quiet && (options.progress || ::isatty(2)))
+    progress = std::ref(line.emplace(options.progress));
+  const auto np = DP::max_distance(options.max_distance).accuracy(options.epsilon).callback(progress);
   const Clock::time_point t1 = Clock::now();
   // the distances are the same bit for bit on any number of threads (and without TBB)
 #ifdef CGAL_LINKED_WITH_TBB
@@ -496,6 +510,11 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
   else
     run.statistics = solver.template compute_distances_to_nearest_source<Tag>(q.sources, CGAL::make_property_map(d), np);
   run.seconds_propagate = seconds_since(t1);
+  if(line)
+  {
+    line->finish();
+    line.reset(); // its last line ends before anything else is printed
+  }
 
   const std::vector<long long> label = dggvtp::finish_sources(q, nearest, d.data()); // per solver vertex
 

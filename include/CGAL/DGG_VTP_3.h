@@ -19,6 +19,7 @@
 /// or accuracy-controlled (DGG-VTP).
 
 #include <CGAL/DGG_VTP_3/Geodesic_distance_solver.h>
+#include <CGAL/DGG_VTP_3/Propagation_cancelled.h>
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
 #include <CGAL/DGG_VTP_3/Triangle_soup_geodesic_distance_solver.h>
 #include <CGAL/DGG_VTP_3/compute_geodesic_distances.h>

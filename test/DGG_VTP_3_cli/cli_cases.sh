@@ -884,6 +884,8 @@ PY
 2 MESH --output=X/d.txt
 1 MESH --quiet=yes
 0 MESH --repair
+0 MESH --progress
+1 MESH --progress=1
 1 MESH --repair=yes
 1 MESH --repare
 1 MESH --exact=1
@@ -1109,6 +1111,24 @@ TABLE
     # flat and convex: the distances from corner 0 are the straight ones, the centre's on both copies
     expect_lines "$work/d.txt" 0 1 2 1 1.4142135623730951 2.2360679774997898 2 2.2360679774997898 2.8284271247461903 1.4142135623730951
     [ "$(grep -c '^l ' "$work/i.obj")" -eq 2 ] || fail "not one piece per isoline: $(cat "$work/i.obj")" ;;
+  progress_line)  # issue 30: the progress line, on a pseudo-terminal (script) and with --progress
+    command -v script > /dev/null || fail "no script command (util-linux) for a pseudo-terminal"
+    (cd "$work" && timeout 60 script -qec "$bin $spot --progress --output d.txt" /dev/null) > "$meta/tty" 2>&1 ||
+      fail "dggvtp on a pseudo-terminal: $(cat -v "$meta/tty")"
+    grep -q $'\r''dggvtp: [0-9.]*% of the vertices final, [0-9.]* s elapsed, ' "$meta/tty" ||
+      fail "no progress line on the terminal: $(cat -v "$meta/tty")"
+    run "$spot" --quiet --output "$work/ref.txt"; expect_rc 0
+    cmp -s "$work/d.txt" "$work/ref.txt" || fail "the distances changed with the progress line"
+    # off a terminal: lines with --progress only, and none with --quiet
+    run "$spot" --progress --output "$work/e.txt"; expect_rc 0
+    printf '%s\n' "$err" | grep -q "^dggvtp: [0-9.]*% of the vertices final, [0-9.]* s elapsed, " ||
+      fail "no progress line with --progress: $err"
+    run "$spot" --output "$work/e.txt"; expect_rc 0
+    ! printf '%s\n' "$err" | grep -q "of the vertices final" || fail "a progress line off a terminal without --progress: $err"
+    run "$spot" --quiet --progress --output "$work/e.txt"; expect_rc 0
+    [ -z "$err" ] || fail "--quiet, yet: $err"
+    (cd "$work" && timeout 60 script -qec "$bin $spot --quiet --progress --output d.txt" /dev/null) > "$meta/tty" 2>&1
+    ! grep -q "of the vertices final" "$meta/tty" || fail "a progress line on the terminal with --quiet" ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"

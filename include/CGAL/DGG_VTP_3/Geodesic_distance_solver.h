@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/Propagation_cancelled.h>
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
 #include <CGAL/DGG_VTP_3/Shortest_path_tree.h>
 #include <CGAL/DGG_VTP_3/parameters.h>
@@ -207,6 +208,17 @@ public:
    *     \cgalParamType{a writable vertex property map with value type `std::size_t`}
    *     \cgalParamDefault{none}
    *   \cgalParamNEnd
+   *   \cgalParamNBegin{callback}
+   *     \cgalParamDescription{progress and cancellation: called on the calling thread between
+   *                           rounds of the propagation, after the first round and then at most
+   *                           every 0.1 s (none for a propagation of one round), with the fraction
+   *                           in [0, 1] of the vertices whose distance is final (popped from the
+   *                           queue; unreachable vertices never are). Returning `false` cancels the
+   *                           query: it throws `CGAL::DGG_VTP_3::Propagation_cancelled` and the
+   *                           solver stays as it was, ready for the next query}
+   *     \cgalParamType{a callable as `bool(double)`, e.g. `std::function<bool(double)>`}
+   *     \cgalParamDefault{none}
+   *   \cgalParamNEnd
    * \cgalNamedParamsEnd
    *
    * \returns what the propagation did
@@ -214,6 +226,7 @@ public:
    *         of another mesh, barycentric coordinates that are not finite, negative beyond rounding
    *         or do not add up to 1), the accuracy is not in [0, 1], or the maximum
    *         distance is negative or NaN; the same for the targets.
+   * \throws CGAL::DGG_VTP_3::Propagation_cancelled if `callback` returned `false`.
    */
   template <class ConcurrencyTag = Sequential_tag, class Source, class VertexDistanceMap,
             class NamedParameters = parameters::Default_named_parameters>
@@ -259,8 +272,9 @@ public:
    * \param np `accuracy` and `DGG_VTP_3::parameters::max_distance`, as for `compute_distances()`,
    *        applied to every propagation. The named parameters whose outputs are per query
    *        (`DGG_VTP_3::parameters::targets`, `DGG_VTP_3::parameters::target_distances`,
-   *        `DGG_VTP_3::parameters::nearest_source_map`) are refused at compile time: one output
-   *        would have to serve every source (and the nearest of one source is that source).
+   *        `DGG_VTP_3::parameters::nearest_source_map`, `callback`) are refused at compile time:
+   *        one output would have to serve every source (and the nearest of one source is that
+   *        source).
    * \returns what each propagation did, in the order of `sources`
    * \throws std::invalid_argument before any propagation if an element of `sources` is not a
    *         vertex of the mesh, if the two ranges differ in size, if the accuracy is not in [0, 1],
@@ -316,7 +330,7 @@ public:
    *
    * \tparam ConcurrencyTag, SourceRange as for `compute_distances_to_nearest_source()`
    * \param np `accuracy`, `DGG_VTP_3::parameters::max_distance`, `DGG_VTP_3::parameters::targets`
-   *        (the paths to points that will be asked for, and early termination)
+   *        (the paths to points that will be asked for, and early termination), `callback`
    */
   template <class ConcurrencyTag = Sequential_tag, class SourceRange,
             class NamedParameters = parameters::Default_named_parameters>

@@ -18,6 +18,7 @@
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace CGAL {
@@ -40,6 +41,8 @@ struct Propagation_query
   std::vector<Surface_point<FT>> point_targets;
   bool record_origins = false;                // the pseudo-source of each vertex (nearest sources, paths)
   bool record_arrivals = false;               // the direction each vertex's path arrives from (paths)
+  // the user's `callback`: given the fraction of vertices popped, false cancels (empty: none)
+  std::function<bool(double)> progress;
 };
 
 } // namespace internal

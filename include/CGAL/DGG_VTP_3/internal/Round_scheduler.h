@@ -137,6 +137,7 @@ public:
         peak += propagation.take_peak(p);
       windows_peak = (std::max)(windows_peak, peak);
       deliver<ConcurrencyTag>(propagation, active);
+      propagation.report_progress(); // between rounds: on the caller's thread, never in a patch's
     }
   }
 

@@ -134,6 +134,9 @@ public:
     static_assert(parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value,
                   "one field per source: the named parameter nearest_source_map is not taken "
                   "(the nearest source of a vertex is that of its field)");
+    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value,
+                  "one field per source: the named parameter callback is not taken (the fields are "
+                  "handed to the caller one by one: it sees the progress, and may stop by throwing)");
     Query options;
     const Computation_FT accuracy = checked_accuracy(np);
     add_max_distance(np, options);
@@ -230,6 +233,8 @@ private:
       !parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value;
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value)
       s.targets = builder().add_targets(parameters::get_parameter(np, internal_np::targets_t()), s.query);
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value)
+      s.query.progress = parameters::get_parameter(np, internal_np::callback);
     return s;
   }
 

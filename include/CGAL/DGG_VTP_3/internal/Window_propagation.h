@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/Propagation_cancelled.h>
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
 #include <CGAL/DGG_VTP_3/internal/Distance_bound.h>
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
@@ -35,6 +36,7 @@
 #include <boost/heap/d_ary_heap.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <deque>
 #include <functional>
@@ -227,6 +229,24 @@ private:
     const std::size_t peak = m_patches[k].lists.peak();
     m_patches[k].lists.reset_peak();
     return peak;
+  }
+
+  // The query's progress callback after the first round, then at most every 0.1 s, with the
+  // fraction of the vertices popped (those whose distance is final, but for the rare vertex popped
+  // again); throws Propagation_cancelled when it returns false.
+  void report_progress()
+  {
+    if(!m_query->progress)
+      return;
+    const auto now = std::chrono::steady_clock::now();
+    if(now < m_next_report)
+      return;
+    m_next_report = now + std::chrono::milliseconds(100);
+    std::size_t popped = 0;
+    for(const Patch& p : m_patches)
+      popped += p.stats.vertices_popped;
+    if(!m_query->progress((std::min)(1., double(popped) / double((std::max)(std::size_t(1), m_distance.size())))))
+      throw Propagation_cancelled();
   }
 
   void receive(Index k, const typename Scheduler::Window_message& m) { add_window(m_patches[k], m.halfedge, m.window); }
@@ -450,6 +470,7 @@ private:
   std::vector<char> m_is_source;      // per vertex: one of the sources (they emit all around)
   std::deque<Patch> m_patches;        // a deque: a patch never moves
   const Propagation_query<FT>* m_query = nullptr;
+  std::chrono::steady_clock::time_point m_next_report; // of the progress callback (the first: at once)
   std::vector<Index> m_origin;        // per vertex: the pseudo-source of its path (only if the query asks)
   std::vector<Arrival> m_arrival;     // per vertex: where its path arrives from (only if the query asks)
   Point_targets<FT> m_targets;        // the query's targets inside faces
