@@ -1111,6 +1111,14 @@ TABLE
     # flat and convex: the distances from corner 0 are the straight ones, the centre's on both copies
     expect_lines "$work/d.txt" 0 1 2 1 1.4142135623730951 2.2360679774997898 2 2.2360679774997898 2.8284271247461903 1.4142135623730951
     [ "$(grep -c '^l ' "$work/i.obj")" -eq 2 ] || fail "not one piece per isoline: $(cat "$work/i.obj")" ;;
+  mesh_too_large)  # the fuzzer's NaN cast: a box or squared lengths that overflow a double are refused, no --repair offered
+    printf 'OFF\n6 2 0\n-1.7e308 0 0\n-1.7e308 1e300 0\n-1.7e308 0 1e300\n1.7e308 0 0\n1.7e308 1e300 0\n1.7e308 0 1e300\n3 0 1 2\n3 3 4 5\n' |
+      input wide.off
+    run "$work/wide.off" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *"span more than the largest finite double"* ]] || fail "not the span: $err"
+    printf 'OFF\n4 2 0\n0 0 0\n1e200 0 0\n0 1e200 0\n1e200 1e200 0\n3 0 1 2\n3 2 1 3\n' | input big.off
+    run "$work/big.off" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *"too large for the number type"* && "$err" != *--repair* ]] || fail "not too large, or --repair offered: $err" ;;
   progress_line)  # issue 30: the progress line, on a pseudo-terminal (script) and with --progress
     command -v script > /dev/null || fail "no script command (util-linux) for a pseudo-terminal"
     (cd "$work" && timeout 60 script -qec "$bin $spot --progress --output d.txt" /dev/null) > "$meta/tty" 2>&1 ||

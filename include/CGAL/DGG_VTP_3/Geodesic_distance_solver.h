@@ -145,8 +145,9 @@ public:
    *   \cgalParamNEnd
    * \cgalNamedParamsEnd
    *
-   * \throws std::invalid_argument if a face is not a triangle, a coordinate is not finite, or a
-   *         face is degenerate (zero length edge or zero area), a face is a sliver (an edge more
+   * \throws std::invalid_argument if a face is not a triangle, a coordinate is not finite, the mesh is too
+   *         large (its bounding box overflows a `double`, or a face's squared edge lengths
+   *         or area overflow `FT`), a face is degenerate (zero length edge or zero area), a face is a sliver (an edge more
    *         than 1e10 times longer than the height on it), an edge is shorter than 1e-3 machine
    *         epsilons of `FT` times the size of the mesh, or a vertex is the tip of a cone
    *         sharper than 1e-4 radians (a closed fan whose angles add up to less): windows would
