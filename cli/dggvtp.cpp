@@ -149,7 +149,8 @@ all its copies). Vertices no face uses, and vertices of other
 connected components than the sources', are unreachable: inf. An unreadable or empty file, a
 non-finite coordinate, a mesh too large for a double (its bounding box, or a face's squared
 edge lengths or area, overflow: scale it down), a face with fewer than 3 or repeated vertices,
-a degenerate face (zero length edge or zero area), a sliver (an edge more than 1e10 times longer than the height on it),
+a degenerate face (zero length edge or zero area), a sliver (an edge more than 1e10 times
+longer than the height on it),
 an edge shorter than 1e-3 machine epsilons times the mesh's size (2.2e-19 of it in double),
 the tip of a cone sharper than 1e-4 radians (windows would wrap around those for hours), a polygon that cannot be triangulated (it touches or crosses itself)
 or an out-of-range vertex is an error: one line on stderr starting with 'error:', exit status 2,

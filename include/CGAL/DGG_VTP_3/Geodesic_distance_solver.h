@@ -145,14 +145,14 @@ public:
    *   \cgalParamNEnd
    * \cgalNamedParamsEnd
    *
-   * \throws std::invalid_argument if a face is not a triangle, a coordinate is not finite, the mesh is too
-   *         large (its bounding box overflows a `double`, or a face's squared edge lengths
-   *         or area overflow `FT`), a face is degenerate (zero length edge or zero area), a face is a sliver (an edge more
-   *         than 1e10 times longer than the height on it), an edge is shorter than 1e-3 machine
-   *         epsilons of `FT` times the size of the mesh, or a vertex is the tip of a cone
-   *         sharper than 1e-4 radians (a closed fan whose angles add up to less): windows would
-   *         wrap around those too many times (see the input policy in the user manual), or
-   *         if the mesh has more faces or vertices than 32-bit indices can number (about 1.4e9).
+   * \throws std::invalid_argument if a face is not a triangle, a coordinate is not finite, the
+   *         mesh is too large (its bounding box overflows a `double`, or a face's squared edge
+   *         lengths or area overflow `FT`), a face is degenerate (zero length edge or zero area),
+   *         a face is a sliver (an edge more than 1e10 times longer than the height on it), an
+   *         edge is shorter than 1e-3 machine epsilons of `FT` times the size of the mesh, or a
+   *         vertex is the tip of a cone sharper than 1e-4 radians (a closed fan whose angles add
+   *         up to less): windows would wrap around those too many times (see the input policy in
+   *         the user manual), or if the mesh has more faces or vertices than 32-bit indices can number (about 1.4e9).
    */
   template <class NamedParameters = parameters::Default_named_parameters>
   explicit Geodesic_distance_solver(const TriangleMesh& tm,
