@@ -18,52 +18,78 @@
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
 #include <algorithm>
-#include <cmath>
 
 namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
 
-// How far a window may travel from its pseudo-source before the paths through its CH-relay
-// vertices approximate every longer geodesic it carries within a factor (1 + eps): the paper's
-// Theorem 2 (Adikusuma et al.), Eq. (1). `source` is the window's unfolded pseudo-source,
-// [b0, b1] its interval on the x axis, `relay_left` / `relay_right` the distances from the
-// pseudo-source to the CH-relay vertices on the rays through b0 / b1.
-// Returns +infinity where the theorem gives no bound (rays opening by 60 degrees or more, which
-// makes l0 - d <= 0, or no relay yet).
+// The distance bound d_max of a window (paper, Algorithm 1, line 22), as this package certifies
+// it. All decisions of DGG-VTP compare keys (see Key_ratio in Tuning.h): a window of pseudo-source
+// s at distance sigma_s has the key sigma_s / rho + |sq| at a point q beyond it (rho = 1 + eps).
+// A CH-relay vertex c of the window, at a = |sc| on one of its boundary rays, has a distance
+// F(c) <= sigma_s + a (the window lit it) and emits all around: its key at q is at most
+// sigma_s / rho + a / rho + |cq|. Where that is below the window's key,
+//
+//   G_c(q) = a / rho + |cq| - |sq| < 0,
+//
+// the relay's offer dominates the window's, and the window may stop there without loss (the
+// argument of the manual: a dominated offer never holds the bound (1 + eps) d on its own).
+// Along a ray from s, |cq| grows no faster than |sq|: G_c only decreases, so a window whose
+// interval is dominated everywhere stays dominated beyond it. At distance r from s, c dominates
+// the rays that make an angle t with its own when cos t >= lambda + a k / r (lambda = 1 / rho,
+// k = (1 - lambda^2) / 2: squaring G_c < 0). The bound is the smallest r from which the rays
+// dominated by the two relays together cover the beam (closed form below); beyond it the
+// window stops. The relays' segments to the interval run inside the window's beam, which holds
+// no vertex: they are paths on the surface.
+//
+// `source`: the window's unfolded pseudo-source; [b0, b1] its interval on the x axis;
+// `relay_left` / `relay_right`: a, the distance from the pseudo-source to the CH-relay vertex on
+// the ray through b0 / b1, or 0 where that ray goes through no known vertex; `rho`: the key
+// ratio. Returns +infinity where the relays cannot cover the beam (rho = 1, the exact mode: never).
 template <class FT>
-FT distance_bound(const Vec2<FT>& source, FT b0, FT b1, FT relay_left, FT relay_right, FT eps)
+FT distance_bound(const Vec2<FT>& source, FT b0, FT b1, FT relay_left, FT relay_right, FT rho)
 {
-  const FT inf = Number_type_math<FT>::infinity();
-  const FT l0 = (std::max)(relay_left, relay_right);
-  const FT l1 = (std::min)(relay_left, relay_right);
-  if(!(l1 > FT(0)))
+  using Math = Number_type_math<FT>;
+  const FT inf = Math::infinity();
+  if(!(rho > FT(1)) || !(relay_left > FT(0) || relay_right > FT(0)))
     return inf;
+  const FT zero = number<FT>(0), one = number<FT>(1), two = number<FT>(2);
   const Vec2<FT> r0{b0 - source.x, -source.y};
   const Vec2<FT> r1{b1 - source.x, -source.y};
-  const FT cos_opening = dot(r0, r1) / (length(r0) * length(r1));
-  using Math = Number_type_math<FT>;
-  // c2: the point of the shorter relay's ray at distance l0; d = |c0 c2|
-  const FT d = l0 * Math::sqrt((std::max)(number<FT>(0), number<FT>(2) - number<FT>(2) * cos_opening));
-  if(!(d < l0))
+  const FT norms = length(r0) * length(r1);
+  if(!(norms > FT(0)))
     return inf;
-  const FT alpha = l1 / l0;
-  FT beta(1);
-  if(alpha > FT(0.99))
-    beta = number<FT>(0.5);
-  else
+  const FT cos_opening = dot(r0, r1) / norms;
+  const FT sin_opening = cross(r0, r1) / norms;
+  // 1 - cos and 1 - lambda without cancellation: narrow beams and small eps are the usual case
+  const FT one_minus_cos = cos_opening > FT(0) ? sin_opening * sin_opening / (one + cos_opening) : one - cos_opening;
+  const FT lambda = one / rho;
+  const FT one_minus_lambda = (rho - one) / rho;
+  const FT k = one_minus_lambda * (one + lambda) / two;
+  if(!(relay_left > FT(0) && relay_right > FT(0)))
   {
-    const FT q = number<FT>(1) / (number<FT>(1) - alpha);
-    const FT disc = q * q - q - number<FT>(2) * eps * l0 * (l0 - d) / (d * d);
-    if(disc >= FT(0))
-    {
-      const FT mu = q - Math::sqrt(disc);
-      if(mu > FT(0) && mu < FT(1))
-        beta = mu;
-    }
+    // one relay covers the whole opening: cos(opening) >= lambda + a k / r
+    const FT a = (std::max)(relay_left, relay_right);
+    const FT slack = one_minus_lambda - one_minus_cos; // cos(opening) - lambda
+    return slack > FT(0) ? a * k / slack : inf;
   }
-  const FT spread = (number<FT>(1) - beta) * d;
-  return l0 + spread * spread / (number<FT>(2) * eps * (l0 - d));
+  // Two relays: with u = lambda + a_l x and v = lambda + a_r x (x = k / r), the cosines of the
+  // angles t_l and t_r each relay dominates, t_l + t_r = opening is
+  //   u^2 + v^2 - 2 u v cos(opening) = sin^2(opening),
+  // a quadratic P x^2 + Q x + R = 0 with R < 0 exactly when the beam is narrower than what two
+  // relays at infinity dominate (2 arccos lambda). Its positive root bounds x: below it the
+  // relays' angles together exceed the opening (or one of them alone does), as long as each
+  // relay dominates some rays at all (u, v <= 1, x <= (1 - lambda) / a).
+  const FT al = relay_left, ar = relay_right;
+  const FT R = one_minus_cos * (one_minus_cos - two * two * k);
+  if(!(R < FT(0)))
+    return inf;
+  const FT P = (al - ar) * (al - ar) + two * al * ar * one_minus_cos;
+  const FT Q = two * lambda * (al + ar) * one_minus_cos;
+  const FT disc = Q * Q - two * two * P * R;
+  const FT x_root = -two * R / (Q + Math::sqrt((std::max)(zero, disc)));
+  const FT x = (std::min)(x_root, one_minus_lambda / (std::max)(al, ar));
+  return x > FT(0) ? k / x : inf;
 }
 
 // Distance from the pseudo-source to the nearest point of the window's interval.

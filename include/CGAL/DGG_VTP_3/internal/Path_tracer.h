@@ -182,10 +182,10 @@ private:
         const Point straight{number<FT>(1), number<FT>(0)};
         const Corner_direction<FT, Index> arrival{cw, 0, back.y < FT(0) ? straight : back};
         Corner_direction<FT, Index> on = arrival;
-        if(!turn_direction(m_mesh, on, true, false, straight))
+        if(!turn_direction(m_mesh, on, true, straight))
         {
           on = arrival;
-          if(!turn_direction(m_mesh, on, false, false, straight))
+          if(!turn_direction(m_mesh, on, false, straight))
             on = Corner_direction<FT, Index>{*m_mesh.corners_begin(w), 0, straight};
         }
         h = on.corner;

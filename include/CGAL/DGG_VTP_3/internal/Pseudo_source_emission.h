@@ -43,8 +43,13 @@ struct Incoming_directions
 // each corner it lights, the distances of the corner's two other vertices along its edges and a
 // full-edge window across the edge opposite it; from a source inside a face, the same from the
 // point. Which corners a vertex lights depends on why it is a pseudo-source: all of them for a
-// source or a singular vertex, its shadow for a saddle of the exact algorithm, its fan in
-// DGG-VTP.
+// source, a singular vertex or a pseudo-source of DGG-VTP (see Pseudo_source_states), its shadow
+// for a saddle of the exact algorithm.
+//
+// A pseudo-source of DGG-VTP lights all its corners rather than the paper's fan: its windows are
+// needed wherever its key may be the least, which near the vertex is in every direction (the
+// manual's argument rests on it), and pairwise trimming cuts them back to the paper's fan, the
+// directions nearly straight ahead of the path that reached it, within a face or two.
 //
 // What is sent goes to `out`, the propagation on the pseudo-source's patch:
 //   out.relax(vertex, distance, corner, direction, origin)  a path reaches a vertex (see
@@ -60,12 +65,10 @@ class Pseudo_source_emission
   using T = Tuning<FT>;
 
 public:
-  // `bound_epsilon`: epsilon of the windows' distance bound (0: exact, no bound);
-  // `fan_half_width`: radians added on both sides of a fan
-  Pseudo_source_emission(const Mesh& mesh, FT bound_epsilon, FT fan_half_width)
+  // `rho`: the key ratio of the windows (1: exact)
+  Pseudo_source_emission(const Mesh& mesh, FT rho)
     : m_mesh(mesh)
-    , m_bound_epsilon(bound_epsilon)
-    , m_fan_widening(small_turn(fan_half_width))
+    , m_rho(rho)
     , m_shadow_widening(small_turn(T::shadow_widening()))
   {}
 
@@ -82,20 +85,31 @@ public:
   // least pi on both sides, so a saddle emits windows only into the faces that meet the cone
   // [back + pi, back + angle_sum - pi] of the directions it arrived from, widened by a small
   // angle for rounding (emitting more is always safe: windows are real paths, pruned later).
+  // The cone runs from the first recorded arrival direction in.low turned by pi counterclockwise
+  // to the last, in.high, turned by pi clockwise: a union of cones sliding with the arrival
+  // direction. Corners are compared by rank, counted on around the vertex, then pseudo-angle.
   template <class Out>
   void in_shadow(Index v, FT dv, const Incoming_directions<FT>& in, Out& out) const
   {
-    in_cone(v, dv, in, false, m_shadow_widening, out);
-  }
-
-  // Lines 11-12 of DGG-VTP: every vertex is a pseudo-source, but only inside its fan, the
-  // directions nearly straight ahead of the geodesic that reached it (paper, Fig. 5): the
-  // straight continuations on the two sides, back + pi and back + angle_sum - pi, widened by the
-  // fan half-width on both sides (for a convex vertex they swap places).
-  template <class Out>
-  void in_fan(Index v, FT dv, const Incoming_directions<FT>& in, Out& out) const
-  {
-    in_cone(v, dv, in, !m_mesh.turns_at_least_once(v), m_fan_widening, out);
+    Corner_direction<FT, Index> from = direction_at(m_mesh, v, in.low), to = direction_at(m_mesh, v, in.high);
+    const std::int64_t k = m_mesh.corners_end(v) - m_mesh.corners_begin(v);
+    // a closed fan: turns never leave it
+    turn_direction(m_mesh, from, true, m_shadow_widening);
+    turn_direction(m_mesh, to, false, m_shadow_widening);
+    // the cone's ends, one turn apart on the side where the continuations end
+    const std::int64_t from_rank = from.rank, to_rank = to.rank + k;
+    const FT from_angle = pseudo_angle(from.vector), to_angle = pseudo_angle(to.vector);
+    if(to_rank > from_rank + k || (to_rank == from_rank + k && !(to_angle < from_angle)))
+    {
+      all_around(v, dv, out);
+      return;
+    }
+    if(to_rank < from_rank || (to_rank == from_rank && to_angle < from_angle))
+      return;
+    out.count_pseudo_source();
+    // a corner that both ends meet is lit once
+    for(std::int64_t r = from_rank; r <= (std::min)(to_rank, from_rank + k - 1); ++r)
+      across_corner(v, dv, m_mesh.corner_of_rank(v, Index(((r % k) + k) % k)), out);
   }
 
   // Lines 2-7 for a source inside a face (or on an edge, then in both faces): it reaches the
@@ -121,37 +135,6 @@ public:
   }
 
 private:
-  // Windows into the faces that meet the cone from the straight continuation of the first
-  // recorded arrival direction on one side to that of the last on the other, widened by the
-  // angle of `widening` at both ends: for a saddle (or flat) vertex from in.low turned by pi
-  // counterclockwise to in.high turned by pi clockwise, the shadow; for a convex one (`convex`,
-  // angle sum below 2 pi, where the two continuations cross) from in.low turned by pi clockwise
-  // to in.high turned by pi counterclockwise. A union of cones sliding with the arrival
-  // direction. Corners are compared by rank, counted on around the vertex, then pseudo-angle.
-  template <class Out>
-  void in_cone(Index v, FT dv, const Incoming_directions<FT>& in, bool convex, const Point& widening, Out& out) const
-  {
-    Corner_direction<FT, Index> from = direction_at(m_mesh, v, in.low), to = direction_at(m_mesh, v, in.high);
-    const std::int64_t k = m_mesh.corners_end(v) - m_mesh.corners_begin(v);
-    // a closed fan: turns never leave it
-    turn_direction(m_mesh, from, !convex, convex, widening);
-    turn_direction(m_mesh, to, convex, convex, widening);
-    // the cone's ends, one turn apart on the side where the continuations end
-    const std::int64_t from_rank = from.rank + (convex ? k : 0), to_rank = to.rank + (convex ? 0 : k);
-    const FT from_angle = pseudo_angle(from.vector), to_angle = pseudo_angle(to.vector);
-    if(to_rank > from_rank + k || (to_rank == from_rank + k && !(to_angle < from_angle)))
-    {
-      all_around(v, dv, out);
-      return;
-    }
-    if(to_rank < from_rank || (to_rank == from_rank && to_angle < from_angle))
-      return;
-    out.count_pseudo_source();
-    // a corner that both ends meet is lit once
-    for(std::int64_t r = from_rank; r <= (std::min)(to_rank, from_rank + k - 1); ++r)
-      across_corner(v, dv, m_mesh.corner_of_rank(v, Index(((r % k) + k) % k)), out);
-  }
-
   // a full-edge window on the edge opposite `v` in the face of corner `h`, and the distances of
   // the corner's two other vertices along its edges
   template <class Out>
@@ -164,7 +147,7 @@ private:
     out.relax(m_mesh.source(prev), dv + m_mesh.length(prev), prev, Point{number<FT>(1), number<FT>(0)}, v);
     const Index t = m_mesh.opposite(across);
     if(t != Mesh::no_halfedge)
-      out.add_window(t, window_across_corner(m_mesh, h, dv, m_bound_epsilon, v));
+      out.add_window(t, window_across_corner(m_mesh, h, dv, m_rho, v));
   }
 
   template <class Out>
@@ -184,13 +167,12 @@ private:
       const Index t = m_mesh.opposite(e);
       if(b[(k + 2) % 3] != FT(0) && t != Mesh::no_halfedge) // not on this edge
         out.add_window(t, window_from_point(m_mesh, e, q, number<FT>(0), length(q - Point{m_mesh.length(e), number<FT>(0)}),
-                                            to_source, m_bound_epsilon, origin));
+                                            to_source, m_rho, origin));
     }
   }
 
   const Mesh& m_mesh;
-  const FT m_bound_epsilon;      // epsilon of the distance bound (0: exact, no bound)
-  const Point m_fan_widening;    // the turn added on both sides of a fan
+  const FT m_rho;                // key ratio of the windows (1: exact)
   const Point m_shadow_widening; // the turn added on both sides of a shadow, for rounding
 };
 

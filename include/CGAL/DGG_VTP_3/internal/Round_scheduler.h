@@ -55,7 +55,7 @@ class Round_scheduler
 public:
   using Index = std::uint32_t;
 
-  // the three things a patch may do to another one
+  // the four things a patch may do to another one
   struct Window_message
   {
     Index halfedge;
@@ -72,6 +72,10 @@ public:
   struct Face_message
   {
     Index face;
+  };
+  struct Relay_message // a window stopped, relying on this vertex
+  {
+    Index vertex;
   };
 
   Round_scheduler(const Patch_partition<FT>& partition, std::size_t number_of_vertices)
@@ -154,10 +158,12 @@ private:
     std::vector<Window_message> windows;
     std::vector<Relax_message> relaxations;
     std::vector<Face_message> faces; // entering R
-    bool empty() const { return windows.empty() && relaxations.empty() && faces.empty(); }
+    std::vector<Relay_message> relays;
+    bool empty() const { return windows.empty() && relaxations.empty() && faces.empty() && relays.empty(); }
     void push(const Window_message& m) { windows.push_back(m); }
     void push(const Relax_message& m) { relaxations.push_back(m); }
     void push(const Face_message& m) { faces.push_back(m); }
+    void push(const Relay_message& m) { relays.push_back(m); }
   };
 
   // The outboxes of the round, each patch receiving from the others in the order of their ids,
@@ -194,6 +200,8 @@ private:
         for(const Relax_message& m : box.relaxations)
           propagation.receive(q, m);
         for(const Face_message& m : box.faces)
+          propagation.receive(q, m);
+        for(const Relay_message& m : box.relays) // after the distances the windows gave them
           propagation.receive(q, m);
         box = Outbox(); // its memory back: some pair of patches talks in a few rounds only
       }

@@ -30,15 +30,23 @@ struct Tuning
 {
   // ---- accuracy control (DGG-VTP) -----------------------------------------------------------
 
-  // The epsilon given to the distance bound of Theorem 2 and to the "one angle, two sides"
-  // tolerance: 0.25 times the user's. It is the loosest factor that keeps every vertex of the
-  // shared meshes within the user's epsilon (max 0.88 epsilon, fandisk at 1e-4); 1 already gives
-  // 3.4 epsilon on fandisk.
-  static FT bound_epsilon(FT accuracy) { return number<FT>(0.25) * accuracy; }
+  // The key ratio rho: every decision of DGG-VTP compares keys, a window's pseudo-source distance
+  // divided by rho plus the straight length beyond it, and this makes every distance at most rho
+  // times the exact one (the manual's argument). rho = 1 + eps, less a margin for the rounding of
+  // the keys (64 machine epsilons, far below any accepted eps in double); 1 (the exact mode) when
+  // nothing is left of eps.
+  static FT key_ratio(FT accuracy)
+  {
+    const FT margin = number<FT>(2) * rounding_margin(number<FT>(1));
+    return accuracy > margin ? number<FT>(1) + accuracy - margin : number<FT>(1);
+  }
 
-  // Radians added on both sides of a pseudo-source's fan (the paper says sqrt(epsilon); the
-  // reference code 3 sqrt(epsilon) of its remapped epsilon).
-  static FT fan_half_width(FT accuracy) { return number<FT>(3) * Number_type_math<FT>::sqrt(bound_epsilon(accuracy)); }
+  // A vertex that becomes the CH-relay vertex of a window that will stop within this many lengths
+  // of the window's edge becomes a pseudo-source at once (see Window_propagation::anticipate_stop):
+  // on bunny_1M, windows at 1e-1 / 1e-2 / 1e-4: 11.0M / 17.8M / 29.3M when relays emit only once
+  // their window has stopped, 7.7M / 13.5M / 29.2M with 3, 7.2M / 12.7M / 30.8M when every vertex
+  // emits.
+  static FT stop_anticipation() { return number<FT>(3); }
 
   // ---- rounding ------------------------------------------------------------------------------
 

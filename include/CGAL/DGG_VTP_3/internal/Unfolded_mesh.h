@@ -100,9 +100,6 @@ public:
   // corner; the one before; `no_halfedge` past a border
   Index next_in_turn(Index h) const { return m_opposite[prev(h)]; }
   Index previous_in_turn(Index h) const { return m_opposite[h] == no_halfedge ? no_halfedge : next(m_opposite[h]); }
-  // the angle sum at `v` is at least 2 pi: the straight continuations of a path on its two sides
-  // do not cross (a saddle or a flat vertex)
-  bool turns_at_least_once(Index v) const { return m_turns_at_least_once[v] != 0; }
   // on the border, or where several umbrellas meet: geodesics may turn there at any angle
   bool is_singular(Index v) const { return m_singular[v] != 0; }
   // geodesics may bend there: saddle (angle sum above 2*pi), border or non-manifold vertex
@@ -125,7 +122,6 @@ private:
   std::vector<Index> m_vertex_corners_begin;// V+1: CSR offsets into m_vertex_corners
   std::vector<Index> m_vertex_corners;      // 3F: corners grouped by vertex, in turning order
   std::vector<Index> m_corner_rank;         // 3F: position of each corner among its vertex's
-  std::vector<char> m_turns_at_least_once;  // V: angle sum at least 2 pi
   std::vector<char> m_singular;             // V: border or non-manifold vertex
   std::vector<char> m_exact_pseudo_source;  // V: pseudo-source of the exact (VTP) propagation
   std::size_t m_non_manifold_vertices = 0;
@@ -385,13 +381,8 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   const bool exactly = !(below > 0.);
   const Vec2<FT> two_pi_less = exactly ? Vec2<FT>{number<FT>(1), number<FT>(0)} : Vec2<FT>{number<FT>(std::cos(below)), number<FT>(-std::sin(below))};
   out.m_exact_pseudo_source.assign(nv, 0);
-  out.m_turns_at_least_once.assign(nv, 0);
   for(std::size_t v = 0; v < nv; ++v)
-  {
-    out.m_exact_pseudo_source[v] =
-      out.m_singular[v] || angle_sum[v].compare(exactly ? 2 : 1, two_pi_less) > 0;
-    out.m_turns_at_least_once[v] = angle_sum[v].compare(2, Vec2<FT>{number<FT>(1), number<FT>(0)}) >= 0;
-  }
+    out.m_exact_pseudo_source[v] = out.m_singular[v] || angle_sum[v].compare(exactly ? 2 : 1, two_pi_less) > 0;
   return order;
 }
 

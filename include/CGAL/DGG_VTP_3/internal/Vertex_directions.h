@@ -27,7 +27,7 @@ namespace DGG_VTP_3 {
 namespace internal {
 
 // Directions around a vertex without angles. The decisions that depend on them (is this vertex a
-// saddle, which faces does its shadow or its fan meet, which way does a path go on through it)
+// saddle, which faces does its shadow meet, which way does a path go on through it)
 // are sign tests on unfolded vectors: no atan2 and no pi, so that they are exact in an exact
 // number type, and free of the rounding of angle sums at 2 pi and pi in the others.
 //
@@ -136,14 +136,14 @@ Corner_direction<FT, typename Mesh::Index> direction_at(const Mesh& mesh, typena
   return {mesh.corner_of_rank(v, rank), std::int64_t(rank), vector_of_pseudo_angle(number<FT>(2) * (position - number<FT>(rank)))};
 }
 
-// The turns of DGG-VTP's fans, the shadows of saddles and straight paths through vertices: by
-// pi - s or pi + s (s given by its rotation `turn_s`, see small_turn()), counterclockwise or
-// clockwise, from a direction at a vertex. Returns false if the turn leaves the vertex's fan of
-// faces at a border. The result is on the first edge of the next corner rather than on the last
-// edge of its own corner, so that one direction has one representation.
+// The turns of the shadows of saddles and of straight paths through vertices: by pi - s (s given
+// by its rotation `turn_s`, see small_turn()), counterclockwise or clockwise, from a direction at
+// a vertex. Returns false if the turn leaves the vertex's fan of faces at a border. The result is
+// on the first edge of the next corner rather than on the last edge of its own corner, so that
+// one direction has one representation.
 template <class Mesh, class FT>
 bool turn_direction(const Mesh& mesh, Corner_direction<FT, typename Mesh::Index>& d, bool counterclockwise,
-                    bool by_more_than_pi, const Vec2<FT>& turn_s)
+                    const Vec2<FT>& turn_s)
 {
   using Index = typename Mesh::Index;
   using Point = Vec2<FT>;
@@ -181,13 +181,7 @@ bool turn_direction(const Mesh& mesh, Corner_direction<FT, typename Mesh::Index>
     return true;
   };
   const Point t = counterclockwise ? d.vector : mirror(d.vector, mesh.last_edge_direction(d.corner));
-  if(!by_more_than_pi)
-    return walk(Point{-(t.x * turn_s.x + t.y * turn_s.y), -(t.y * turn_s.x - t.x * turn_s.y)});
-  // pi first and then s, so that the turn left to make stays below 2 pi
-  if(!walk(Point{-t.x, -t.y}))
-    return false;
-  const Point r = counterclockwise ? d.vector : mirror(d.vector, mesh.last_edge_direction(d.corner));
-  return walk(Point{r.x * turn_s.x - r.y * turn_s.y, r.x * turn_s.y + r.y * turn_s.x});
+  return walk(Point{-(t.x * turn_s.x + t.y * turn_s.y), -(t.y * turn_s.x - t.x * turn_s.y)});
 }
 
 } // namespace internal

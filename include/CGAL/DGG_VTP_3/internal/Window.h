@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
 #include <cstdint>
@@ -23,10 +24,14 @@ namespace DGG_VTP_3 {
 namespace internal {
 
 // A window (paper, Fig. 2a): the interval [b0, b1] of a halfedge's edge lit straight from a
-// pseudo-source, expressed in that halfedge's frame. The geodesic distance of a point `p` of the
-// interval is `sigma + |p - source|`. The window travels into the halfedge's face.
+// pseudo-source, expressed in that halfedge's frame. The window travels into the halfedge's face.
 //
-// DGG-VTP (paper, Theorem 2) adds the CH-relay distances and the distance bound; in the exact
+// Its values are keys (see Tuning::key_ratio): `sigma` is the pseudo-source's distance divided by
+// the key ratio rho, so that every rule compares `sigma + |p - source|`; the geodesic distance the
+// window gives a point is `value_at(p, rho) = rho sigma + |p - source|`. In the exact mode rho is
+// 1 and the two are the same.
+//
+// DGG-VTP (paper, Theorem 2) adds the CH-relay vertices and the distance bound; in the exact
 // mode they stay at their neutral values (no relay, no bound).
 template <class FT>
 struct Window
@@ -34,14 +39,40 @@ struct Window
   FT b0;               // start of the interval, distance from the halfedge's source
   FT b1;               // end of the interval, b0 <= b1 <= edge length
   Vec2<FT> source;     // unfolded pseudo-source, below the edge (source.y <= 0)
-  FT sigma;            // geodesic distance of the pseudo-source
-  FT relay_left;       // distance from the pseudo-source to the CH-relay vertex of the b0 side
-  FT relay_right;      // distance from the pseudo-source to the CH-relay vertex of the b1 side
+  FT sigma;            // key of the pseudo-source: its geodesic distance / rho
+  FT relay_left;       // distance from the pseudo-source to the CH-relay vertex on the ray through b0 (0: none)
+  FT relay_right;      // distance from the pseudo-source to the CH-relay vertex on the ray through b1 (0: none)
   FT d_max;            // distance bound: the window stops where it would go farther (+inf: never)
   std::uint32_t origin; // its pseudo-source: a vertex, or (number of vertices + k) for the k-th source
+  std::uint32_t relay_left_vertex;  // the CH-relay vertex on the ray through b0, if relay_left > 0
+  std::uint32_t relay_right_vertex; // the CH-relay vertex on the ray through b1, if relay_right > 0
+  bool bound_is_stale = false; // a relay was dropped since d_max was computed: recompute it
 
   FT distance_to(const Vec2<FT>& p) const { return sigma + length(p - source); }
   FT distance_to_base_point(FT x) const { return sigma + length(Vec2<FT>{x - source.x, -source.y}); }
+
+  // Pruning moves an end of the interval: its boundary ray no longer goes through the relay
+  // vertex of that side, whose segments to the window might now leave its beam.
+  void cut_start(FT t)
+  {
+    b0 = t;
+    drop_relay(relay_left);
+  }
+  void cut_end(FT t)
+  {
+    b1 = t;
+    drop_relay(relay_right);
+  }
+
+  // the relay vertex `relay` (of this window) is no longer on its boundary ray
+  void drop_relay(FT& relay)
+  {
+    if(relay > FT(0))
+    {
+      relay = number<FT>(0);
+      bound_is_stale = true;
+    }
+  }
 };
 
 } // namespace internal

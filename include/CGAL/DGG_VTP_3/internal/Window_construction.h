@@ -30,25 +30,27 @@ namespace internal {
 
 // The full-edge window that a pseudo-source at `p` (in the frame of halfedge `e`, inside its face),
 // at distance `sigma`, sends across the edge of `e`, in the frame of the neighbouring halfedge
-// (the caller checks that there is one). Its CH-relay vertices are the ends of the edge (paper,
-// Algorithm 1, line 3), at distances `relay_left` (from the target of `e`, the start of the
-// neighbouring halfedge) and `relay_right`; its distance bound follows from them (+inf in the
-// exact mode, `bound_epsilon` 0).
+// (the caller checks that there is one). In DGG-VTP (key ratio `rho` > 1) its CH-relay vertices
+// are the ends of the edge (paper, Algorithm 1, line 3), at distances `relay_left` (from the
+// target of `e`, the start of the neighbouring halfedge) and `relay_right`, and its distance
+// bound follows from them; the exact mode has neither.
 template <class FT>
 inline Window<FT> window_from_point(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index e,
-                                    const Vec2<FT>& p, FT sigma, FT relay_left, FT relay_right, FT bound_epsilon,
+                                    const Vec2<FT>& p, FT sigma, FT relay_left, FT relay_right, FT rho,
                                     std::uint32_t origin)
 {
   const FT len = mesh.length(e);
+  const bool dgg = rho > FT(1);
   Window<FT> w;
   w.b0 = number<FT>(0);
   w.b1 = len;
   w.source = Vec2<FT>{len - p.x, -p.y}; // the same triangle seen from the other side
-  w.sigma = sigma;
-  w.relay_left = relay_left;
-  w.relay_right = relay_right;
-  w.d_max = bound_epsilon > FT(0) ? distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, bound_epsilon)
-                                  : Number_type_math<FT>::infinity();
+  w.sigma = dgg ? sigma / rho : sigma;
+  w.relay_left = dgg ? relay_left : number<FT>(0);
+  w.relay_right = dgg ? relay_right : number<FT>(0);
+  w.relay_left_vertex = mesh.target(e);
+  w.relay_right_vertex = mesh.source(e);
+  w.d_max = distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, rho);
   w.origin = origin;
   return w;
 }
@@ -57,12 +59,12 @@ inline Window<FT> window_from_point(const Unfolded_mesh<FT>& mesh, typename Unfo
 // sends across the edge opposite it.
 template <class FT>
 inline Window<FT> window_across_corner(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index h, FT sigma,
-                                       FT bound_epsilon, std::uint32_t origin)
+                                       FT rho, std::uint32_t origin)
 {
   using Mesh = Unfolded_mesh<FT>;
   const auto across = Mesh::next(h); // the edge opposite the pseudo-source; its apex
   return window_from_point(mesh, across, mesh.apex(across), sigma, mesh.length(Mesh::prev(h)), mesh.length(h),
-                           bound_epsilon, origin);
+                           rho, origin);
 }
 
 // The child of `w` on edge (a, c), in the frame of the neighbouring halfedge a -> c (of length
@@ -97,6 +99,32 @@ inline bool right_child(const Window<FT>& w, const Vec2<FT>& b, const Vec2<FT>& 
   child.b1 = v1 * len;
   child.source = to_neighbour_frame(w.source, c, b - c, len);
   return true;
+}
+
+// A child whose boundary ray grazes vertex `v`, at `distance` from the pseudo-source, takes it
+// as its CH-relay vertex on that side (paper, Algorithm 1, line 22): `relay` and `relay_vertex`
+// are the child's fields of that side. Only DGG-VTP (key ratio `rho` > 1) has relays.
+template <class FT>
+inline void take_relay(Window<FT>& child, FT& relay, std::uint32_t& relay_vertex, FT distance, std::uint32_t v, FT rho)
+{
+  if(!(rho > FT(1)))
+    return;
+  relay = distance;
+  relay_vertex = v;
+  child.bound_is_stale = true;
+}
+
+// The distance bound follows the relays a window has now; a bound of relays it no longer has is
+// not kept, even if smaller: their segments to the window may leave its beam.
+template <class FT>
+inline const Window<FT>& with_bound(Window<FT>& w, FT rho)
+{
+  if(w.bound_is_stale)
+  {
+    w.d_max = distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, rho);
+    w.bound_is_stale = false;
+  }
+  return w;
 }
 
 } // namespace internal

@@ -20,6 +20,7 @@
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Point_targets.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
+#include <CGAL/DGG_VTP_3/internal/Propagation_vertices.h>
 #include <CGAL/DGG_VTP_3/internal/Pseudo_source_emission.h>
 #include <CGAL/DGG_VTP_3/internal/Round_scheduler.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
@@ -53,10 +54,12 @@ namespace internal {
 // Windows sit in per-halfedge window lists; a vertex-oriented priority queue pops the nearest
 // vertex, which may emit windows as a pseudo-source (see Pseudo_source_emission) and brings its
 // faces into the propagation region R; then the window lists inside R are propagated in FIFO
-// order until every window has left R. Pruning is by the distance bound, the ICH rule and "one
-// angle, two sides" (and pairwise trimming in the exact mode, see Window_pruning). With accuracy
-// 0 this is the exact VTP algorithm: only saddle, border and non-manifold vertices are
-// pseudo-sources and windows travel without bound.
+// order until every window has left R. Pruning is by the distance bound, the ICH rule, "one
+// angle, two sides" and pairwise trimming (see Window_pruning), all of them on keys (see Window
+// and Tuning::key_ratio). With accuracy 0 this is the exact VTP algorithm: keys are distances,
+// only saddle, border and non-manifold vertices are pseudo-sources and windows travel without
+// bound. DGG-VTP adds the distance bound, and the relay vertices of the windows it stops as
+// pseudo-sources (see Pseudo_source_states).
 //
 // The algorithm runs on one patch of faces at a time (Patch_partition), in rounds that a
 // Round_scheduler drives; whatever it does to another patch's part of the mesh goes through the
@@ -78,13 +81,11 @@ public:
     : m_mesh(mesh)
     , m_partition(partition)
     , m_scheduler(partition, mesh.number_of_vertices())
-    , m_bound_epsilon(T::bound_epsilon(accuracy))
-    , m_emission(mesh, m_bound_epsilon, T::fan_half_width(accuracy))
-    , m_distance(mesh.number_of_vertices(), infinity())
-    , m_incoming(mesh.number_of_vertices())
+    , m_rho(T::key_ratio(accuracy))
+    , m_emission(mesh, m_rho)
+    , m_vertices(mesh, m_rho)
     , m_in_region(mesh.number_of_faces(), 0)
     , m_scheduled(mesh.number_of_halfedges(), 0)
-    , m_is_source(mesh.number_of_vertices(), 0)
   {
     for(Index k = 0; k < partition.size(); ++k)
       m_patches.emplace_back(k, partition.first_face(k), partition.end_face(k, mesh.number_of_faces()));
@@ -98,18 +99,12 @@ public:
   void run(const Propagation_query<FT>& query)
   {
     m_query = &query;
-    const Index nv = Index(m_distance.size());
-    if(query.record_origins)
-      m_origin.assign(nv, no_origin());
-    if(query.record_arrivals)
-      m_arrival.assign(nv, Arrival{Mesh::no_halfedge, Point{number<FT>(0), number<FT>(0)}});
+    const Index nv = Index(m_vertices.distance.size());
+    m_vertices.record(query.record_origins, query.record_arrivals);
     for(std::size_t k = 0; k < query.vertex_sources.size(); ++k)
     {
       const Index s = query.vertex_sources[k];
-      m_is_source[s] = 1;
-      m_distance[s] = number<FT>(0);
-      if(query.record_origins)
-        m_origin[s] = (std::min)(m_origin[s], nv + query.source_numbers[k]);
+      m_vertices.set_source(s, query.source_numbers[k]);
       m_scheduler.commit(s, number<FT>(0));
       m_patches[m_partition.owner(s)].queue.push(Queue_entry(number<FT>(0), s));
     }
@@ -127,8 +122,8 @@ public:
       m_stats.pseudo_sources += p.stats.pseudo_sources;
       m_stats.vertices_popped += p.stats.vertices_popped;
     }
-    m_targets.finish(m_mesh, m_distance, query);
-    for(FT& d : m_distance)
+    m_targets.finish(m_mesh, m_vertices.distance, query);
+    for(FT& d : m_vertices.distance)
     {
       if(d > query.max_distance)
         d = infinity();
@@ -137,22 +132,16 @@ public:
     }
   }
 
-  // per vertex: the pseudo-source of its path (a vertex, or the number of vertices + the number of
-  // a source in the query's order), when the query records them
-  const std::vector<Index>& origins() const { return m_origin; }
-  // per vertex: the corner and the direction (in that corner's frame) its path arrives from,
-  // when the query records them
-  struct Arrival
-  {
-    Index corner;
-    Point direction;
-  };
-  const std::vector<Arrival>& arrivals() const { return m_arrival; }
-  static Index no_origin() { return Index(-1); }
+  // per vertex, when the query records them: the pseudo-source of its path (see
+  // Propagation_vertices), and where its path arrives from
+  using Arrival = typename Propagation_vertices<FT>::Arrival;
+  const std::vector<Index>& origins() const { return m_vertices.origin; }
+  const std::vector<Arrival>& arrivals() const { return m_vertices.arrival; }
+  static Index no_origin() { return Propagation_vertices<FT>::no_origin(); }
   // the query's point targets: how their shortest paths arrive
   const Point_targets<FT>& point_targets() const { return m_targets; }
 
-  const std::vector<FT>& distances() const { return m_distance; }
+  const std::vector<FT>& distances() const { return m_vertices.distance; }
   const Propagation_statistics& statistics() const { return m_stats; }
 
 private:
@@ -183,7 +172,7 @@ private:
   FT nearest_queued(Index k)
   {
     Queue& queue = m_patches[k].queue;
-    while(!queue.empty() && queue.top().first > m_distance[queue.top().second])
+    while(!queue.empty() && queue.top().first > m_vertices.distance[queue.top().second])
       queue.pop(); // superseded by a later, shorter distance
     return queue.empty() ? infinity() : queue.top().first;
   }
@@ -194,7 +183,8 @@ private:
   // nearest queued vertex of all patches
   bool query_is_answered(FT nearest) const
   {
-    return nothing_pending_below(early_termination_limit(*m_query, m_targets, m_mesh, m_distance), nearest, m_patches);
+    return nothing_pending_below(early_termination_limit(*m_query, m_targets, m_mesh, m_vertices.distance), nearest, m_rho,
+                                 m_patches);
   }
 
   // lines 9-29 in one patch, for the vertices nearer than `limit`
@@ -207,17 +197,15 @@ private:
       const Queue_entry top = p.queue.top();
       p.queue.pop();
       const Index v = top.second;
-      if(top.first > m_distance[v])
+      if(top.first > m_vertices.distance[v])
         continue; // superseded by a later, shorter distance
       ++p.stats.vertices_popped;
       // lines 10-13: v as a pseudo-source
       Emission_out out{*this, p};
-      if(m_is_source[v] || m_mesh.is_singular(v))
-        m_emission.all_around(v, m_distance[v], out);
-      else if(is_dgg())
-        m_emission.in_fan(v, m_distance[v], m_incoming[v], out);
-      else if(m_mesh.is_exact_pseudo_source(v))
-        m_emission.in_shadow(v, m_distance[v], m_incoming[v], out);
+      if(is_dgg() ? m_vertices.is_source[v] || m_vertices.pseudo_sources.emit_at_pop(v) : m_vertices.is_source[v] || m_mesh.is_singular(v))
+        m_emission.all_around(v, m_vertices.distance[v], out);
+      else if(!is_dgg() && m_mesh.is_exact_pseudo_source(v))
+        m_emission.in_shadow(v, m_vertices.distance[v], m_vertices.incoming[v], out);
       enter_propagation_region(p, v);
       propagate_scheduled_lists(p);
     }
@@ -245,7 +233,7 @@ private:
     std::size_t popped = 0;
     for(const Patch& p : m_patches)
       popped += p.stats.vertices_popped;
-    if(!m_query->progress((std::min)(1., double(popped) / double((std::max)(std::size_t(1), m_distance.size())))))
+    if(!m_query->progress((std::min)(1., double(popped) / double((std::max)(std::size_t(1), m_vertices.distance.size())))))
       throw Propagation_cancelled();
   }
 
@@ -255,6 +243,7 @@ private:
     relax(m_patches[k], m.vertex, m.distance, m.corner, m.direction, m.origin);
   }
   void receive(Index k, const typename Scheduler::Face_message& m) { enter_face(m_patches[k], m.face); }
+  void receive(Index k, const typename Scheduler::Relay_message& m) { make_emitter(m_patches[k], m.vertex); }
 
   // A window list can only be waiting outside R if none of its face's vertices was ever reached,
   // which well-formed input does not produce; rather than lose its windows, such faces are
@@ -278,40 +267,13 @@ private:
   // ---------------------------------------------------------------------------------------------
   // vertices
 
-  // Lines 23-24: a path of length `d` reaches `v`, arriving from `direction` (pointing back along
-  // the path, in the frame of `corner`, one of v's corners: position `back` at `v`). Paths that
-  // tie with the best one widen the recorded range of arrival directions: the shadow of a saddle
-  // is the union of their shadows.
+  // lines 23-24 (see Propagation_vertices::relax), on the patch that owns `v`
   void relax(Patch& p, Index v, FT d, Index corner, const Point& direction, Index origin)
   {
-    if(m_scheduler.template hand_off<typename Scheduler::Relax_message>(p.id, m_partition.owner(v), v, d, corner,
-                                                                         direction, origin))
-      return;
-    const FT back = direction_position(m_mesh, corner, direction);
-    const FT dv = m_distance[v];
-    Incoming_directions<FT>& in = m_incoming[v];
-    if(d < dv - T::rounding_margin(dv) || dv == infinity())
-    {
-      m_distance[v] = d;
-      in.low = in.high = back;
-      if(!m_origin.empty())
-        m_origin[v] = origin;
-      if(!m_arrival.empty())
-        m_arrival[v] = Arrival{corner, direction};
-      p.queue.push(Queue_entry(d, v));
-    }
-    else if(d <= dv + T::rounding_margin(dv) && !(in.low <= back && back <= in.high))
-    {
-      in.low = (std::min)(in.low, back);
-      in.high = (std::max)(in.high, back);
-      if(d < dv)
-        m_distance[v] = d;
-      if(!m_origin.empty() && d < dv)
-        m_origin[v] = origin;
-      if(!m_arrival.empty() && d < dv)
-        m_arrival[v] = Arrival{corner, direction};
-      p.queue.push(Queue_entry(m_distance[v], v)); // emit the wider shadow if already popped
-    }
+    if(!m_scheduler.template hand_off<typename Scheduler::Relax_message>(p.id, m_partition.owner(v), v, d, corner,
+                                                                          direction, origin) &&
+       m_vertices.relax(v, d, corner, direction, origin))
+      p.queue.push(Queue_entry(m_vertices.distance[v], v));
   }
 
   // what the pseudo-sources of patch `patch` send out (see Pseudo_source_emission)
@@ -323,7 +285,19 @@ private:
     {
       propagation.relax(patch, v, d, corner, direction, origin);
     }
-    void add_window(Index h, const Win& w) { propagation.add_window(patch, h, w); }
+    void add_window(Index h, Win w)
+    {
+      // In DGG-VTP a pseudo-source lights all its corners, and the windows it sends back towards
+      // nearer vertices are mostly beaten through the ends of their edge already: the ICH rule
+      // now (the ends' distances only decrease) spares them the window lists.
+      if(propagation.is_dgg())
+      {
+        const End_keys ends = propagation.end_keys(patch, h);
+        if(!trim_by_end_vertices(w, propagation.m_mesh.length(h), ends.a, ends.b))
+          return;
+      }
+      propagation.add_window(patch, h, with_bound(w, propagation.m_rho));
+    }
     void count_pseudo_source() { ++patch.stats.pseudo_sources; }
   };
 
@@ -390,31 +364,35 @@ private:
 
     // line 18: distance bound and ICH rule
     const FT len = m_mesh.length(h);
-    const FT da = m_scheduler.distance_seen(p.id, m_mesh.source(h), m_distance);
-    const FT db = m_scheduler.distance_seen(p.id, m_mesh.target(h), m_distance);
+    const End_keys ends = end_keys(p, h);
     std::size_t kept = 0;
     for(Win& w : p.buffer)
-      if(!(distance_to_interval(w.source, w.b0, w.b1) > w.d_max) && trim_by_end_vertices(w, len, da, db))
+    {
+      if(distance_to_interval(w.source, w.b0, w.b1) > w.d_max)
+        stop_at_bound(p, w);
+      else if(trim_by_end_vertices(w, len, ends.a, ends.b))
         p.buffer[kept++] = w;
+    }
     p.buffer.resize(kept);
-    if(!is_dgg())
-      trim_overlapping_windows(p.buffer, p.starts);
+    trim_overlapping_windows(p.buffer, p.starts);
     if(m_targets.in_face(Mesh::face(h)))
-      m_targets.cross(m_mesh, h, p.buffer);
+      m_targets.cross(m_mesh, h, p.buffer, m_rho);
 
     // "one angle, two sides": the window that reaches c best, B, splits the face along its path
     // to c, and the other windows' children keep to their side of it (see sides_of_best_path)
-    const Best_toward_apex<FT> best = best_toward_apex(p.buffer, c, p.toward_apex);
-    if(best.window != nullptr) // lines 21-24 for the apex
+    const Best_toward_apex<FT> best = best_toward_apex(p.buffer, c, m_rho, p.toward_apex);
+    if(best.value_window != nullptr) // lines 21-24 for the apex
     {
       // arrival direction at c, in the frame of c's corner prev(h), which starts along c -> a
       const Point to_a = Point{number<FT>(0), number<FT>(0)} - c;
-      const Point back = best.window->source - c;
-      relax(p, apex_vertex, best.distance, Mesh::prev(h), Point{dot(to_a, back), cross(to_a, back)}, best.window->origin);
+      const Point back = best.value_window->source - c;
+      relax(p, apex_vertex, best.value, Mesh::prev(h), Point{dot(to_a, back), cross(to_a, back)},
+            best.value_window->origin);
     }
 
     // lines 19-26: the children on the edges (c, a) and (b, c); a child whose ray grazes c takes
-    // it as its new CH-relay vertex on that side (line 22)
+    // it as its new CH-relay vertex on that side (line 22); one whose side was cut loses the
+    // relay of that side
     const Index left = m_mesh.opposite(Mesh::prev(h));
     const Index right = m_mesh.opposite(Mesh::next(h));
     const Point b{len, number<FT>(0)};
@@ -425,54 +403,89 @@ private:
       const FT x = p.toward_apex[i].crossing;
       Sides<FT> keep{w.b1, w.b0};
       if(best.window != nullptr && &w != best.window)
-        keep = sides_of_best_path(w, p.toward_apex[i], c, best, m_bound_epsilon);
+        keep = sides_of_best_path(w, p.toward_apex[i], c, best);
       if(left != Mesh::no_halfedge && w.b0 < (std::min)(x, keep.left_end) &&
          left_child(w, c, x, keep.left_end, m_mesh.length(Mesh::prev(h)), child))
       {
         if(x < keep.left_end)
-          update_relay(child, child.relay_right, length(c - w.source));
-        add_window(p, left, child);
+          take_relay(child, child.relay_right, child.relay_right_vertex, length(c - w.source), apex_vertex, m_rho);
+        else if(keep.left_end < w.b1)
+          child.drop_relay(child.relay_right);
+        add_window(p, left, with_bound(child, m_rho));
+        if(x < keep.left_end)
+          anticipate_stop(p, child, apex_vertex, m_mesh.length(Mesh::prev(h)));
       }
       if(right != Mesh::no_halfedge && (std::max)(x, keep.right_start) < w.b1 &&
          right_child(w, b, c, x, keep.right_start, m_mesh.length(Mesh::next(h)), child))
       {
         if(keep.right_start < x)
-          update_relay(child, child.relay_left, length(c - w.source));
-        add_window(p, right, child);
+          take_relay(child, child.relay_left, child.relay_left_vertex, length(c - w.source), apex_vertex, m_rho);
+        else if(w.b0 < keep.right_start)
+          child.drop_relay(child.relay_left);
+        add_window(p, right, with_bound(child, m_rho));
+        if(keep.right_start < x)
+          anticipate_stop(p, child, apex_vertex, m_mesh.length(Mesh::next(h)));
       }
     }
   }
 
-  // a window that meets a vertex takes it as CH-relay vertex on that side; its bound is
-  // recomputed and only ever tightens
-  void update_relay(Win& w, FT& relay, FT distance) const
+  // the keys of the ends of the edge of halfedge `h` (its source a, its target b) for the ICH rule,
+  // from the distances patch `p` sees (see Propagation_vertices::key)
+  struct End_keys
   {
-    if(!is_dgg())
-      return;
-    relay = distance;
-    w.d_max = (std::min)(w.d_max, distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right,
-                                                 m_bound_epsilon));
+    FT a, b;
+  };
+  End_keys end_keys(const Patch& p, Index h) const
+  {
+    return End_keys{vertex_key(p, m_mesh.source(h)), vertex_key(p, m_mesh.target(h))};
+  }
+  FT vertex_key(const Patch& p, Index v) const
+  {
+    return m_vertices.key(v, m_scheduler.distance_seen(p.id, v, m_vertices.distance), m_partition.owner(v) == p.id);
   }
 
-  bool is_dgg() const { return m_bound_epsilon > FT(0); }
+  // Line 18, the distance bound: `w` stops, and its beam beyond is left to its relays' windows
+  // (see distance_bound), which must then emit.
+  void stop_at_bound(Patch& p, const Win& w)
+  {
+    if(w.relay_left > FT(0))
+      make_emitter(p, w.relay_left_vertex);
+    if(w.relay_right > FT(0))
+      make_emitter(p, w.relay_right_vertex);
+  }
+
+  // A window that took vertex `v` as relay and will stop within a few lengths of its edge (of
+  // length `edge`) will rely on `v`: it becomes a pseudo-source now, so that it emits when it is
+  // popped, in distance order, rather than after the windows that its own would have pruned.
+  void anticipate_stop(Patch& p, const Win& w, Index v, FT edge)
+  {
+    if(is_dgg() && w.d_max < distance_to_interval(w.source, w.b0, w.b1) + T::stop_anticipation() * edge)
+      make_emitter(p, v);
+  }
+
+  // vertex `v` emits all around: when it is popped next (again, if it was already)
+  void make_emitter(Patch& p, Index v)
+  {
+    if(!m_scheduler.template hand_off<typename Scheduler::Relay_message>(p.id, m_partition.owner(v), v) &&
+       m_vertices.pseudo_sources.make_emitter(v))
+      p.queue.push(Queue_entry(m_vertices.distance[v], v));
+  }
+
+  bool is_dgg() const { return m_rho > FT(1); }
 
   // ---------------------------------------------------------------------------------------------
 
   const Mesh& m_mesh;
   const Patch_partition<FT>& m_partition;
   Scheduler m_scheduler;
-  const FT m_bound_epsilon;           // epsilon of the distance bound (0: exact, no bound)
+  const FT m_rho;                     // key ratio: 1 + epsilon (1: exact)
   const Pseudo_source_emission<FT> m_emission; // what pseudo-sources send out, and where
-  std::vector<FT> m_distance;         // per vertex: best distance found so far (+inf: not reached)
-  std::vector<Incoming_directions<FT>> m_incoming; // per vertex: arrival directions of its best paths
+  Propagation_vertices<FT> m_vertices; // per vertex: distance, arrivals, (pseudo-)source
   std::vector<char> m_in_region;      // per face: inside the propagation region R
   std::vector<char> m_scheduled;      // per halfedge: its window list is in its patch's FIFO
-  std::vector<char> m_is_source;      // per vertex: one of the sources (they emit all around)
   std::deque<Patch> m_patches;        // a deque: a patch never moves
   const Propagation_query<FT>* m_query = nullptr;
   std::chrono::steady_clock::time_point m_next_report; // of the progress callback (the first: at once)
-  std::vector<Index> m_origin;        // per vertex: the pseudo-source of its path (only if the query asks)
-  std::vector<Arrival> m_arrival;     // per vertex: where its path arrives from (only if the query asks)
   Point_targets<FT> m_targets;        // the query's targets inside faces
   Propagation_statistics m_stats;
 };

@@ -39,13 +39,19 @@ namespace internal {
 // The pruning rules, as geometry on windows of one window list: all in the frame of the list's
 // halfedge (a = (0, 0), b = (length, 0), the apex c above).
 
-// moves one end of the interval to `t` if `t` lies strictly inside it; a crossing that
-// rounding puts outside (or a NaN) leaves the window whole, which is always safe
+// moves the start (or the end) of the interval to `t` if `t` lies strictly inside it; a crossing
+// that rounding puts outside (or a NaN) leaves the window whole, which is always safe
 template <class FT>
-inline void shrink_to(const Window<FT>& w, FT t, FT& end)
+inline void shrink_start_to(Window<FT>& w, FT t)
 {
   if(w.b0 < t && t < w.b1)
-    end = t;
+    w.cut_start(t);
+}
+template <class FT>
+inline void shrink_end_to(Window<FT>& w, FT t)
+{
+  if(w.b0 < t && t < w.b1)
+    w.cut_end(t);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -67,7 +73,7 @@ inline bool trim_by_end_vertices(Window<FT>& w, FT len, FT da, FT db)
     if(w.distance_to_base_point(w.b1) > k + w.sigma + w.b1)
       return false;
     if(w.distance_to_base_point(w.b0) > k + w.sigma + w.b0)
-      shrink_to(w, (ss - k * k) / (number<FT>(2) * (k + sx)), w.b0);
+      shrink_start_to(w, (ss - k * k) / (number<FT>(2) * (k + sx)));
   }
   if(db < inf)
   {
@@ -76,7 +82,7 @@ inline bool trim_by_end_vertices(Window<FT>& w, FT len, FT da, FT db)
     if(w.distance_to_base_point(w.b0) > k + w.sigma - w.b0)
       return false;
     if(w.distance_to_base_point(w.b1) > k + w.sigma - w.b1)
-      shrink_to(w, (k * k - ss) / (number<FT>(2) * (k - sx)), w.b1);
+      shrink_end_to(w, (k * k - ss) / (number<FT>(2) * (k - sx)));
   }
   return w.b0 < w.b1;
 }
@@ -93,31 +99,35 @@ struct Toward_apex
   FT distance;
 };
 
-// B, the window of a list that reaches the apex c best: its distance to c and where its ray to c
-// crosses the edge (window null if no window lights c)
+// B, the window of a list that reaches the apex c best by key: its key at c and where its ray to
+// c crosses the edge; and the window that gives c its shortest distance (`value`), which is what
+// c is relaxed with (windows null if no window lights c). In the exact mode they are the same.
 template <class FT>
 struct Best_toward_apex
 {
   const Window<FT>* window;
   FT distance;
   FT crossing;
+  const Window<FT>* value_window;
+  FT value;
 };
 
-// Every window of `windows` seen from the apex c (into `toward_apex`), and the best of them. A
-// window lights c also when its crossing misses its interval by no more than rounding: when c
-// lies exactly on the line from a pseudo-source through a vertex (a regular grid), the windows
-// on either side of that vertex meet along the ray to c, their ends and the crossing each
-// rounded on their own, and the crossing may fall in a gap of a few ulps between them. Then no
-// window would reach c straight, and the path through that vertex would be lost (c's distance
-// too long by up to 0.14%). A ray that misses by rounding stands for a real path, along the
-// window's end ray, longer only by a term of the second order in that miss.
+// Every window of `windows` seen from the apex c (into `toward_apex`), and the best of them (key
+// ratio `rho`). A window lights c also when its crossing misses its interval by no more than
+// rounding: when c lies exactly on the line from a pseudo-source through a vertex (a regular
+// grid), the windows on either side of that vertex meet along the ray to c, their ends and the
+// crossing each rounded on their own, and the crossing may fall in a gap of a few ulps between
+// them. Then no window would reach c straight, and the path through that vertex would be lost
+// (c's distance too long by up to 0.14%). A ray that misses by rounding stands for a real path,
+// along the window's end ray, longer only by a term of the second order in that miss.
 template <class FT>
-inline Best_toward_apex<FT> best_toward_apex(const std::vector<Window<FT>>& windows, const Vec2<FT>& c,
+inline Best_toward_apex<FT> best_toward_apex(const std::vector<Window<FT>>& windows, const Vec2<FT>& c, FT rho,
                                              std::vector<Toward_apex<FT>>& toward_apex)
 {
   using Math = Number_type_math<FT>;
-  Best_toward_apex<FT> best{nullptr, Math::infinity(), number<FT>(0)};
+  Best_toward_apex<FT> best{nullptr, Math::infinity(), number<FT>(0), nullptr, Math::infinity()};
   toward_apex.resize(windows.size());
+  const FT rho_minus_one = rho - number<FT>(1);
   for(std::size_t i = 0; i < windows.size(); ++i)
   {
     const Window<FT>& w = windows[i];
@@ -130,7 +140,17 @@ inline Best_toward_apex<FT> best_toward_apex(const std::vector<Window<FT>>& wind
     {
       const FT d = t.distance = w.distance_to(c);
       if(d < best.distance)
-        best = Best_toward_apex<FT>{&w, d, x};
+      {
+        best.window = &w;
+        best.distance = d;
+        best.crossing = x;
+      }
+      const FT value = d + rho_minus_one * w.sigma;
+      if(value < best.value)
+      {
+        best.value_window = &w;
+        best.value = value;
+      }
     }
   }
   return best;
@@ -152,25 +172,22 @@ struct Sides
 // those that pass c on B's side of B's crossing; below it, those that did not cut B's segment
 // from its pseudo-source. Below the edge, the two windows' unfoldings are known to be the same
 // surface only inside w's lit triangle, so that test applies only when w's interval contains
-// B's crossing. In DGG-VTP B's path is itself approximate, and cutting w behind it loses
-// accuracy unless w is clearly worse: by more than the relative `tolerance` (0 in the exact
-// mode); otherwise only the classic rule applies, a window lighting c wholly on one side of B's
-// crossing keeps only its child on that side.
+// B's crossing. "Shorter" and "first" are by key (see Window): the argument holds for keys as
+// for distances, since a key, too, grows along a straight path by the length travelled.
 template <class FT>
 inline Sides<FT> sides_of_best_path(const Window<FT>& w, const Toward_apex<FT>& t, const Vec2<FT>& c,
-                                    const Best_toward_apex<FT>& best, FT tolerance)
+                                    const Best_toward_apex<FT>& best)
 {
   using Point = Vec2<FT>;
   const FT inf = Number_type_math<FT>::infinity();
-  const bool lights_apex = t.distance < inf;
   FT to_c = t.distance;
-  if(!lights_apex)
+  if(!(to_c < inf))
   {
     const FT end = t.crossing < w.b0 ? w.b0 : w.b1;
     to_c = w.distance_to_base_point(end) + length(c - Point{end, number<FT>(0)});
   }
   Sides<FT> keep{w.b1, w.b0};
-  if(to_c >= best.distance * (number<FT>(1) + tolerance))
+  if(to_c >= best.distance)
   {
     keep.left_end = (std::min)(best.crossing, w.b1);
     keep.right_start = (std::max)(best.crossing, w.b0);
@@ -198,20 +215,12 @@ inline Sides<FT> sides_of_best_path(const Window<FT>& w, const Toward_apex<FT>& 
         keep.right_start = sB_nearer ? (std::max)(best.crossing, beyond_sB) : inf;
     }
   }
-  else if(lights_apex)
-  {
-    if(w.b0 >= best.crossing)
-      keep.left_end = w.b0;
-    if(w.b1 <= best.crossing)
-      keep.right_start = w.b1;
-  }
   return keep;
 }
 
 // ---------------------------------------------------------------------------------------------
 // Pairwise trimming (as in MMP and VTP): where two windows of one list overlap, the part of one
-// that is everywhere farther than the other carries no shortest path and is cut off. Exact mode
-// only: against approximate windows it loses the paths the bound's relays stand for.
+// that is everywhere farther than the other (by key) carries no shortest path and is cut off.
 
 // The points of (lo, hi) where the two windows give equal distances: sigma_u + r_u = sigma_w + r_w.
 // Squaring twice gives a quadratic; its spurious roots only add harmless piece boundaries.
@@ -265,17 +274,17 @@ inline void cut_where_farther(Window<FT>& x, const FT* cuts, const int* farther,
   if(first == pieces) // farther on the whole overlap
   {
     if(starts_x && ends_x)
-      x.b1 = x.b0;
+      x.cut_end(x.b0);
     else if(starts_x)
-      x.b0 = cuts[pieces];
+      x.cut_start(cuts[pieces]);
     else if(ends_x)
-      x.b1 = cuts[0];
+      x.cut_end(cuts[0]);
     return;
   }
   if(starts_x && first > 0)
-    x.b0 = cuts[first];
+    x.cut_start(cuts[first]);
   if(ends_x && last < pieces)
-    x.b1 = cuts[last];
+    x.cut_end(cuts[last]);
 }
 
 // `u` starts no later than `w`. Their overlap is cut where D_u - D_w = 0 (a hyperbola meets the

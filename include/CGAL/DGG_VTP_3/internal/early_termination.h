@@ -34,8 +34,8 @@ namespace internal {
 // Everything the propagation will still do starts from its pending work: a vertex in a queue
 // (key k: it emits windows and relaxes its neighbours at k or more) or a window in a list (every
 // value it or its descendants give, at the apex of a face or along the children's intervals, is
-// sigma + |p - source| for a point p beyond its interval, so at least its lower bound
-// sigma + distance_to_interval; a relaxation at the apex and a child window are no exception).
+// rho sigma + |p - source| for a point p beyond its interval, so at least its lower bound
+// rho sigma + distance_to_interval; a relaxation at the apex and a child window are no exception).
 // Nothing else makes distances: a value can only come from a chain of such steps, and each step
 // is at least its parent's lower bound. So, between two rounds (when no message is in flight), with
 //   P = the smallest key of the queues and lower bound of the windows in the lists,
@@ -68,9 +68,9 @@ FT early_termination_limit(const Propagation_query<FT>& query, const Point_targe
 }
 
 // Whether nothing pending can go below `limit` (beyond rounding), given the nearest queued key of
-// all patches and each patch's window lists.
+// all patches and each patch's window lists, whose windows' key ratio is `rho`.
 template <class FT, class Patches>
-bool nothing_pending_below(FT limit, FT nearest_queued, const Patches& patches)
+bool nothing_pending_below(FT limit, FT nearest_queued, FT rho, const Patches& patches)
 {
   if(!(limit < Number_type_math<FT>::infinity()))
     return false;
@@ -79,7 +79,7 @@ bool nothing_pending_below(FT limit, FT nearest_queued, const Patches& patches)
     return false;
   for(const auto& p : patches)
     if(!p.lists.all_windows([&](const Window<FT>& w) {
-         return w.sigma + distance_to_interval(w.source, w.b0, w.b1) > above;
+         return rho * w.sigma + distance_to_interval(w.source, w.b0, w.b1) > above;
        }))
       return false;
   return true;
