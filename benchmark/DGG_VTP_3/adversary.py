@@ -13,6 +13,11 @@ and a vertex unreachable in one is unreachable in the other (inf in both); anyth
 included, is a violation. --budget F checks D <= exact * (1 + F * epsilon) instead (F < 1: how
 much margin the rule keeps; the tests use it to show that a violation fails the run).
 
+With every vertex a source, the exact rows are also checked against themselves: a geodesic
+distance is symmetric, so |d(s, v) - d(v, s)| / d above 1e-9 (the exact mode agrees with CGAL's
+Surface_mesh_shortest_path to about 1e-15) means that the exact mode missed the shorter path from
+one of the two sides; such pairs count as violations (a second table, per mesh).
+
 --precision float: the reference stays the exact mode in double; the float exact mode and every
 float epsilon are checked as
     exact * (1 - t) <= D <= exact * (1 + epsilon) * (1 + t),   t = FLOAT_ROUNDING = 2^-23,
@@ -29,9 +34,10 @@ double coordinates the float run moves the points too, by more than that.
 Per mesh and epsilon one table row: the largest error / epsilon with its (source, vertex), the
 lowest relative error (D - exact) / exact, the number of violations, and the time ratio
 epsilon / exact mode of the rows (`seconds_compute_per_rank` of dggvtp-batch --stats, summed over
-the ranks: wall seconds of the rows alone; and the CPU seconds of the processes, `cpu_seconds`).
-Exit status: 0 no violation, 1 a violation, 2 bad input (no dggvtp-batch, a mesh that cannot be
-read or that the input policy refuses, a failed run), with an `error:` line.
+the ranks: wall seconds of the rows alone; and the CPU seconds of the processes, `cpu_seconds`,
+steadier on a shared machine). Exit status: 0 no violation, 1 a violation (or an asymmetric pair),
+2 bad input (no dggvtp-batch, a mesh that cannot be read or that the input policy refuses, a
+failed run), with an `error:` line.
 
 Example (from the repository root, after building dggvtp-batch in build/):
   /usr/bin/python3 benchmark/DGG_VTP_3/adversary.py data/meshes/pinion.ply --epsilons 1e-1 1e-3 1e-5
@@ -58,6 +64,7 @@ BELOW_EXACT = 1e-12         # the contract's lower end in double: exact * (1 - 1
 FLOAT_ROUNDING = 2. ** -23  # t of the float check (see the module's docstring)
 BLOCK_BYTES = 64 << 20      # rows compared at a time: about this many bytes of each matrix
 EXAMPLES = 20               # violations kept per mesh and epsilon for the JSON (the first ones)
+ASYMMETRY = 1e-9            # |d(s, v) - d(v, s)| / d above which the exact mode missed a path
 
 
 class Failure(Exception):
@@ -149,6 +156,41 @@ def compare_files(exact_path, rows_path, epsilon, budget=1., rounding=0.):
     return tally
 
 
+class Symmetry:
+    """The exact mode against itself: with every vertex a source, d(s, v) = d(v, s)."""
+
+    def __init__(self):
+        self.max_rel, self.max_at = 0., None   # largest |d(s, v) - d(v, s)| / max of both, (s, v)
+        self.pairs = 0                         # pairs (s < v) above ASYMMETRY, or reachable one way only
+
+    def add(self, block, mirrored, first_row, first_column):
+        """Compares block = d[rows, columns] with mirrored = d[columns, rows].T, pairs s < v only."""
+        a = np.asarray(block, dtype=np.float64)
+        b = np.asarray(mirrored, dtype=np.float64)
+        rows = first_row + np.arange(a.shape[0])[:, None]
+        columns = first_column + np.arange(a.shape[1])[None, :]
+        larger = np.maximum(a, b)
+        with np.errstate(invalid='ignore'):
+            rel = np.where(a == b, 0., np.abs(a - b) / larger)   # inf both ways: equal; one way only: nan
+        rel[np.isnan(rel)] = np.inf
+        rel[rows >= columns] = 0.
+        r, c = np.unravel_index(int(np.argmax(rel)), rel.shape)
+        if rel[r, c] > self.max_rel:
+            self.max_rel, self.max_at = float(rel[r, c]), (first_row + int(r), first_column + int(c))
+        self.pairs += int(np.count_nonzero(rel > ASYMMETRY))
+
+
+def check_symmetry(exact_path):
+    """A Symmetry of the square exact matrix, square tiles of about BLOCK_BYTES against their mirror."""
+    d = np.load(exact_path, mmap_mode='r')
+    side = max(1, int((BLOCK_BYTES // 8) ** 0.5))
+    symmetry = Symmetry()
+    for i in range(0, d.shape[0], side):
+        for j in range(i, d.shape[1], side):
+            symmetry.add(d[i:i + side, j:j + side], d[j:j + side, i:i + side].T, i, j)
+    return symmetry
+
+
 class Batch:
     """dggvtp-batch on one mesh and one source list, its files in a work folder."""
 
@@ -215,8 +257,19 @@ def table_row(r):
             f"| {r['cpu_ratio']:.2f} | {r['exact_seconds']:.2f} |")
 
 
+def symmetry_header():
+    return ['| mesh | vertices | exact mode: max abs(d(s, v) - d(v, s)) / d | at (s, v) | pairs above 1e-9 |',
+            '|---|---:|---:|---|---:|']
+
+
+def symmetry_row(r):
+    at = '-' if r['max_at'] is None else f"({r['max_at'][0]}, {r['max_at'][1]})"
+    return f"| {r['mesh']} | {r['vertices']} | {r['max_rel']:.1e} | {at} | {r['pairs']} |"
+
+
 def check_mesh(a, exe, mesh, workdir, say):
-    """Every epsilon of one mesh against its exact rows; a list of result records."""
+    """Every epsilon of one mesh against its exact rows: (result records, the exact mode's symmetry
+    record, None unless every vertex is a source)."""
     name = os.path.splitext(os.path.basename(mesh))[0]
     vertices = vertex_count(exe, mesh, workdir)
     if a.sample is not None and a.sample < vertices:
@@ -230,6 +283,11 @@ def check_mesh(a, exe, mesh, workdir, say):
     batch = Batch(exe, mesh, sources, a.threads, workdir, a.quiet)
     say(f'{name}: {vertices} vertices, {rows} sources, exact mode (double)')
     exact, exact_stats = batch.run('exact', 0, 'double')
+    symmetry = None
+    if chosen is None:
+        found = check_symmetry(exact)
+        symmetry = {'mesh': name, 'vertices': vertices, 'max_rel': found.max_rel, 'max_at': found.max_at,
+                    'pairs': found.pairs}
     runs = [(e, a.precision) for e in a.epsilons]
     base_stats = exact_stats
     if a.precision == 'float':
@@ -261,7 +319,7 @@ def check_mesh(a, exe, mesh, workdir, say):
             'source_list': chosen, 'seed': a.seed if chosen is not None else None})
         print(table_row(records[-1]), flush=True)
     os.remove(exact)
-    return records
+    return records, symmetry
 
 
 def epsilon_list(values):
@@ -335,10 +393,12 @@ def main():
     started = datetime.datetime.now().strftime('%Y-%m-%d %H:%M')
     load_before = os.getloadavg()
     print('\n'.join(table_header()), flush=True)
-    records = []
+    records, symmetries = [], []
     try:
         for mesh in meshes:
-            records += check_mesh(a, exe, os.path.abspath(mesh), workdir, say)
+            found, symmetry = check_mesh(a, exe, os.path.abspath(mesh), workdir, say)
+            records += found
+            symmetries += [symmetry] if symmetry else []
     except (Failure, OSError) as e:
         print(f'error: {e}', file=sys.stderr)
         return 2
@@ -347,20 +407,30 @@ def main():
     load_after = os.getloadavg()
     stamp = (f"{started} to {datetime.datetime.now().strftime('%H:%M')}, {revision()}, {machine()}, "
              f"load average {load_before[0]:.1f} before, {load_after[0]:.1f} after")
-    violations = sum(r['violations'] for r in records)
+    symmetry_table = symmetry_header() + [symmetry_row(r) for r in symmetries] if symmetries else []
+    if symmetry_table:
+        print('\n' + '\n'.join(symmetry_table), flush=True)
     if a.markdown:
         with open(a.markdown, 'w') as f:
-            f.write(f'{stamp}\n\n' + '\n'.join(table_header() + [table_row(r) for r in records]) + '\n')
+            f.write(f'{stamp}\n\n' + '\n'.join(table_header() + [table_row(r) for r in records]) + '\n'
+                    + ('\n' + '\n'.join(symmetry_table) + '\n' if symmetry_table else ''))
     if a.json:
         with open(a.json, 'w') as f:
-            json.dump({'when': stamp, 'command': sys.argv, 'float_rounding': FLOAT_ROUNDING, 'records': records},
-                      f, indent=1)
-    bad = [r for r in records if r['violations']]
-    for r in bad:
-        eps = 'exact' if r['epsilon'] == 0 else f"{r['epsilon']:g}"
-        print(f"violation: {r['mesh']} ({r['precision']}) epsilon {eps}: {r['violations']} vertices outside "
-              f"[{r['interval'][0]:.3g}, {r['interval'][1]:.3g}] relative; worst {r['max_rel']:.3g} "
-              f"at (source, vertex) {tuple(r['max_at'])}", file=sys.stderr)
+            json.dump({'when': stamp, 'command': sys.argv, 'float_rounding': FLOAT_ROUNDING,
+                       'asymmetry': ASYMMETRY, 'records': records, 'symmetry': symmetries}, f, indent=1)
+    for r in records:
+        if r['violations']:
+            eps = 'exact' if r['epsilon'] == 0 else f"{r['epsilon']:g}"
+            print(f"violation: {r['mesh']} ({r['precision']}) epsilon {eps}: {r['violations']} vertices outside "
+                  f"[{r['interval'][0]:.3g}, {r['interval'][1]:.3g}] relative; largest {r['max_rel']:.3g} at "
+                  f"(source, vertex) {tuple(r['max_at'])}, lowest {r['min_rel']:.3g} at {tuple(r['min_at'])}",
+                  file=sys.stderr)
+    for r in symmetries:
+        if r['pairs']:
+            print(f"violation: {r['mesh']}: the exact mode is not symmetric: {r['pairs']} pairs with "
+                  f"|d(s, v) - d(v, s)| above {ASYMMETRY:g} relative, at most {r['max_rel']:.3g} at (s, v) "
+                  f"{tuple(r['max_at'])}", file=sys.stderr)
+    violations = sum(r['violations'] for r in records) + sum(r['pairs'] for r in symmetries)
     say(f'{len(records)} rows, {violations} violations ({stamp})')
     return 1 if violations else 0
 

@@ -153,6 +153,43 @@ class Files(unittest.TestCase):
             adversary.compare_files(self.save('e.npy', exact_rows(4, 9)), self.save('d.npy', exact_rows(4, 8)), 1.)
 
 
+class Exact_symmetry(unittest.TestCase):
+    """With every vertex a source, the exact matrix must be symmetric: a missed path shows."""
+
+    def setUp(self):
+        self.folder = tempfile.TemporaryDirectory()
+        self.addCleanup(self.folder.cleanup)
+        self.addCleanup(setattr, adversary, 'BLOCK_BYTES', adversary.BLOCK_BYTES)
+        e = exact_rows(23, 23)
+        self.exact = np.minimum(e, e.T)
+        self.exact[22, :] = self.exact[:, 22] = np.inf   # an isolated vertex
+        self.exact[22, 22] = 0
+
+    def check(self, d):
+        path = os.path.join(self.folder.name, 'e.npy')
+        np.save(path, d)
+        adversary.BLOCK_BYTES = 8 * 5 * 5   # tiles of 5 x 5: diagonal and off-diagonal ones
+        return adversary.check_symmetry(path)
+
+    def test_symmetric(self):
+        found = self.check(self.exact)
+        self.assertEqual((found.pairs, found.max_rel), (0, 0.))
+
+    def test_a_missed_path(self):
+        d = self.exact.copy()
+        d[17, 3] *= 1 + 1e-3
+        d[4, 9] *= 1 + 1e-12          # rounding: not counted
+        found = self.check(d)
+        self.assertEqual((found.pairs, found.max_at), (1, (3, 17)))
+        self.assertAlmostEqual(found.max_rel, 1e-3 / (1 + 1e-3))
+
+    def test_reachable_one_way(self):
+        d = self.exact.copy()
+        d[22, 5] = 1.
+        found = self.check(d)
+        self.assertEqual((found.pairs, found.max_at, found.max_rel), (1, (5, 22), np.inf))
+
+
 class Command_line(unittest.TestCase):
     def run_script(self, *args):
         return subprocess.run([sys.executable, SCRIPT, *args], capture_output=True, text=True)
