@@ -113,6 +113,7 @@ class Tally:
         self.max_rel, self.max_at = -np.inf, None   # largest relative error, (row, vertex)
         self.min_rel, self.min_at = np.inf, None    # lowest relative error, (row, vertex)
         self.violations = 0                         # vertices outside the interval, all rows
+        self.below = 0                              # of which below it: the exact row too long, or D no path's length
         self.examples = []                          # (row, vertex, exact, D) of the first violations
 
     def add(self, exact, d, first_row=0):
@@ -132,6 +133,7 @@ class Tally:
             self.min_rel, self.min_at = float(rel[r, v]), (first_row + int(r), int(v))
         bad = ~((rel >= self.low) & (rel <= self.high))
         count = int(np.count_nonzero(bad))
+        self.below += int(np.count_nonzero(rel < self.low))
         if count and len(self.examples) < EXAMPLES:
             for r, v in zip(*np.nonzero(bad)):
                 if len(self.examples) == EXAMPLES:
@@ -243,8 +245,8 @@ def seconds(stats):
 
 def table_header():
     return ['| mesh | vertices | sources | precision | epsilon | max err/eps | at (source, vertex) | max rel. err '
-            '| lowest rel. err | violations | time eps/exact (wall) | (CPU) | exact rows (s) |',
-            '|---|---:|---:|---|---:|---:|---|---:|---:|---:|---:|---:|---:|']
+            '| lowest rel. err | violations | of which below | time eps/exact (wall) | (CPU) | exact rows (s) |',
+            '|---|---:|---:|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|']
 
 
 def table_row(r):
@@ -253,7 +255,7 @@ def table_row(r):
     over = '-' if r['epsilon'] == 0 else f"{r['max_over_eps']:.3f}"
     at = '-' if r['max_at'] is None else f"({r['max_at'][0]}, {r['max_at'][1]})"
     return (f"| {r['mesh']} | {r['vertices']} | {r['sources']} | {r['precision']} | {eps} | {over} | {at} "
-            f"| {r['max_rel']:.2e} | {r['min_rel']:.1e} | {r['violations']} | {r['time_ratio']:.2f} "
+            f"| {r['max_rel']:.2e} | {r['min_rel']:.1e} | {r['violations']} | {r['below']} | {r['time_ratio']:.2f} "
             f"| {r['cpu_ratio']:.2f} | {r['exact_seconds']:.2f} |")
 
 
@@ -310,7 +312,7 @@ def check_mesh(a, exe, mesh, workdir, say):
             'epsilon': epsilon, 'budget': a.budget,
             'max_rel': tally.max_rel, 'max_over_eps': tally.max_rel / epsilon if epsilon else None,
             'max_at': at(tally.max_at), 'min_rel': tally.min_rel, 'min_at': at(tally.min_at),
-            'violations': tally.violations, 'interval': [tally.low, tally.high],
+            'violations': tally.violations, 'below': tally.below, 'interval': [tally.low, tally.high],
             'examples': [[source_of(r), v, e, d] for r, v, e, d in tally.examples],
             'seconds': wall, 'exact_seconds': base_wall, 'time_ratio': wall / base_wall if base_wall else float('nan'),
             'cpu_seconds': cpu, 'exact_cpu_seconds': base_cpu,

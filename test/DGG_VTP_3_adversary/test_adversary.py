@@ -71,10 +71,11 @@ class Contract(unittest.TestCase):
         e = exact_rows()
         d = e.copy()
         d[1, 7] = e[1, 7] * (1 - 2e-12)
+        d[2, 4] = e[2, 4] * (1 + 2e-2)
         t = self.check(e, d, 1e-2)
-        self.assertEqual((t.violations, t.min_at), (1, (1, 7)))
+        self.assertEqual((t.violations, t.below, t.min_at), (2, 1, (1, 7)))
         d[1, 7] = e[1, 7] * (1 - 1e-13)
-        self.assertEqual(self.check(e, d, 1e-2).violations, 0)
+        self.assertEqual((self.check(e, d, 1e-2).violations, self.check(e, d, 1e-2).below), (1, 0))
 
     def test_unreachable_must_agree(self):
         e = exact_rows()
