@@ -290,7 +290,10 @@ inline void cut_where_farther(Window<FT>& x, const FT* cuts, const int* farther,
 // `u` starts no later than `w`. Their overlap is cut where D_u - D_w = 0 (a hyperbola meets the
 // edge at most twice); on each piece in between the difference has one sign, which the
 // piece's middle tells: its ends are roots or near-ties, so only a clear contradiction there
-// leaves the piece alone. A piece where the two tie within rounding goes to `u`.
+// leaves the piece alone. A piece where the two tie within rounding is left to both: two
+// different pseudo-sources tie along a piece only near the ray through both, beyond which their
+// rays part, and that ray may be a shortest path through vertices in a row (on a grid wrapped
+// around a bore, giving the piece to either window lost it: 0.5% too long).
 template <class FT>
 CGAL_DGG_VTP_3_HOT_INLINE void trim_pair(Window<FT>& u, Window<FT>& w)
 {
@@ -347,7 +350,7 @@ CGAL_DGG_VTP_3_HOT_INLINE void trim_pair(Window<FT>& u, Window<FT>& w)
       else if(at_middle < -m)
         sign[k] = fmax < m ? -1 : 0;
       else
-        sign[k] = fmin > -m && fmax < m ? -1 : 0;
+        sign[k] = 0;
     }
   }
   int opposite_sign[3];
