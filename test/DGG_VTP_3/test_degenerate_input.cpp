@@ -169,6 +169,19 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(invalid_accuracy, Config, All_configurations)
     BOOST_CHECK_THROW(CGAL::DGG_VTP_3::compute_geodesic_distances(mesh, map, v, CGAL::parameters::accuracy(accuracy)),
                       std::invalid_argument);
   }
+  // the message names the named parameter and gives the value as given, not std::to_string's -0.000000
+  try
+  {
+    solver.compute_distances(v, map, CGAL::parameters::accuracy(-1e-9));
+    BOOST_ERROR("accuracy -1e-9 accepted");
+  }
+  catch(const std::invalid_argument& e)
+  {
+    const std::string what = e.what();
+    BOOST_TEST(what.find("accuracy") != std::string::npos, what);
+    BOOST_TEST(what.find("[0, 1]") != std::string::npos, what);
+    BOOST_TEST(what.find("-1e-09") != std::string::npos, what);
+  }
   // 0 is the exact algorithm, the default; 1 the largest accuracy supported
   BOOST_CHECK_NO_THROW(solver.compute_distances(v, map, CGAL::parameters::accuracy(0.)));
   BOOST_CHECK_NO_THROW(solver.compute_distances(v, map, CGAL::parameters::accuracy(CGAL::DGG_VTP_3::maximal_accuracy)));

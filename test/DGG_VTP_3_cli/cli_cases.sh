@@ -184,7 +184,10 @@ case $case in
     done ;;
   epsilon_out_of_range_says_why)  # spot at 10 left 1,821 vertices at inf with exit 0 (issue 31)
     run "$spot" --epsilon 10 --output "$work/d.txt"; expect_usage_error
-    [[ "$err" == *"[0, 1]"* ]] || fail "the error does not give the supported range: $err" ;;
+    [[ "$err" == *"[0, 1]"* ]] || fail "the error does not give the supported range: $err"
+    # the value as the user wrote it, not printed back as -0.000000
+    run "$spot" --epsilon -1e-9 --output "$work/d.txt"; expect_usage_error
+    [[ "$err" == *"--epsilon"*"[0, 1]"*"-1e-9"* ]] || fail "the error does not name --epsilon, the range and the value: $err" ;;
   exact_and_epsilon_conflict) run "$spot" --exact --epsilon 1e-4; expect_usage_error ;;
   spot_output_and_stats)
     run "$spot" --output "$work/d.txt" --stats "$work/s.json"; expect_rc 0

@@ -62,10 +62,13 @@ struct Propagation_options
       exact_given = true;
     else if(arg == "--epsilon")
     {
-      epsilon = parse_number<double>(arg, value());
+      const std::string given = value();
+      epsilon = parse_number<double>(arg, given);
       if(!(epsilon >= 0. && epsilon <= CGAL::DGG_VTP_3::maximal_accuracy))
-        throw Usage_error("--epsilon must be in [0, 1] (0: exact): a relative error above 1 is not an "
-                          "approximation of a distance, and the library refuses it");
+        throw Usage_error("--epsilon must be in [0, 1] (0: exact); got " + given +
+                          (epsilon > CGAL::DGG_VTP_3::maximal_accuracy
+                             ? ": a relative error above 1 is not an approximation of a distance"
+                             : ""));
       epsilon_given = true;
     }
     else if(arg == "--precision")

@@ -43,9 +43,10 @@ namespace DGG_VTP_3 {
  *
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{accuracy}
- *     \cgalParamDescription{the accuracy epsilon of DGG-VTP: every distance is within a relative
- *                           error epsilon of the exact one; 0 is the exact algorithm (VTP)}
- *     \cgalParamType{`double`, finite and >= 0}
+ *     \cgalParamDescription{the accuracy epsilon of DGG-VTP: every distance is at least the exact
+ *                           one and at most (1 + epsilon) times it (see the manual); 0 is the
+ *                           exact algorithm (VTP)}
+ *     \cgalParamType{`double`, in [0, `CGAL::DGG_VTP_3::maximal_accuracy`] = [0, 1]}
  *     \cgalParamDefault{`0`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{vertex_point_map}

@@ -39,11 +39,9 @@ struct nearest_source_map_t {};
 } // namespace internal_np
 
 /// The largest `accuracy` the package supports. Every accuracy in [0, maximal_accuracy] keeps the
-/// contract (every distance within that relative error of the exact one, none below it); a larger
-/// one is refused with `std::invalid_argument`. Why 1: a relative error of 100% no longer
-/// approximates a distance, and the fan of DGG-VTP (3 sqrt(epsilon / 4) radians on each side of the
-/// straight continuation) would widen past a half turn at about 4.4, where the fans wrapped around
-/// and lost vertices (issue 31).
+/// contract (every distance at most (1 + accuracy) times the exact one, none below it); a larger
+/// one is refused with `std::invalid_argument`: a relative error above 100% no longer approximates
+/// a distance.
 constexpr double maximal_accuracy = 1.;
 
 namespace parameters {

@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Key_ratio.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
@@ -44,28 +45,30 @@ namespace internal {
 //
 // `source`: the window's unfolded pseudo-source; [b0, b1] its interval on the x axis;
 // `relay_left` / `relay_right`: a, the distance from the pseudo-source to the CH-relay vertex on
-// the ray through b0 / b1, or 0 where that ray goes through no known vertex; `rho`: the key
+// the ray through b0 / b1, or 0 where that ray goes through no known vertex; `keys`: the key
 // ratio. Returns +infinity where the relays cannot cover the beam (rho = 1, the exact mode: never).
 template <class FT>
-FT distance_bound(const Vec2<FT>& source, FT b0, FT b1, FT relay_left, FT relay_right, FT rho)
+FT distance_bound(const Vec2<FT>& source, FT b0, FT b1, FT relay_left, FT relay_right, const Key_ratio<FT>& keys)
 {
   using Math = Number_type_math<FT>;
   const FT inf = Math::infinity();
-  if(!(rho > FT(1)) || !(relay_left > FT(0) || relay_right > FT(0)))
+  if(keys.is_exact() || !(relay_left > FT(0) || relay_right > FT(0)))
     return inf;
   const FT zero = number<FT>(0), one = number<FT>(1), two = number<FT>(2);
+  const FT lambda = keys.lambda(), one_minus_lambda = keys.one_minus_lambda(), k = keys.k();
   const Vec2<FT> r0{b0 - source.x, -source.y};
   const Vec2<FT> r1{b1 - source.x, -source.y};
-  const FT norms = length(r0) * length(r1);
-  if(!(norms > FT(0)))
+  // Most beams are too wide for their relays (1 - cos(opening) >= 4 k): since 1 - cos >= sin^2 / 2,
+  // a test without square roots finds most of them
+  const FT norms2 = dot(r0, r0) * dot(r1, r1);
+  const FT cross01 = cross(r0, r1);
+  if(!(norms2 > FT(0)) || cross01 * cross01 >= number<FT>(8) * k * norms2)
     return inf;
+  const FT norms = Math::sqrt(norms2);
   const FT cos_opening = dot(r0, r1) / norms;
-  const FT sin_opening = cross(r0, r1) / norms;
-  // 1 - cos and 1 - lambda without cancellation: narrow beams and small eps are the usual case
+  const FT sin_opening = cross01 / norms;
+  // 1 - cos without cancellation: narrow beams are the usual case
   const FT one_minus_cos = cos_opening > FT(0) ? sin_opening * sin_opening / (one + cos_opening) : one - cos_opening;
-  const FT lambda = one / rho;
-  const FT one_minus_lambda = (rho - one) / rho;
-  const FT k = one_minus_lambda * (one + lambda) / two;
   if(!(relay_left > FT(0) && relay_right > FT(0)))
   {
     // one relay covers the whole opening: cos(opening) >= lambda + a k / r

@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Key_ratio.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
 #include <CGAL/DGG_VTP_3/internal/Surface_point.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
@@ -85,8 +86,8 @@ public:
   bool in_face(Index f) const { return !m_in_face.empty() && m_in_face[f] != 0; }
 
   // the windows of the list of halfedge `h` cross its face: each gives its distance to the
-  // targets of the face inside its beam (`rho`: the windows' key ratio)
-  void cross(const Mesh& mesh, Index h, const std::vector<Window<FT>>& windows, FT rho)
+  // targets of the face inside its beam (`keys`: the windows' key ratio)
+  void cross(const Mesh& mesh, Index h, const std::vector<Window<FT>>& windows, const Key_ratio<FT>& keys)
   {
     const Index f = Mesh::face(h);
     const int k = int(h % 3);
@@ -104,7 +105,7 @@ public:
         if(cross_product(Point{w.b1 - w.source.x, -w.source.y}, r) < FT(0) ||
            cross_product(r, Point{w.b0 - w.source.x, -w.source.y}) < FT(0))
           continue;
-        const FT d = rho * w.sigma + length(r);
+        const FT d = keys.distance(w.sigma) + length(r);
         if(d < e.best)
           e.set(d, w.origin, h, w.source - q);
       }

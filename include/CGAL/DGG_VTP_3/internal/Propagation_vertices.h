@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Key_ratio.h>
 #include <CGAL/DGG_VTP_3/internal/Pseudo_source_emission.h>
 #include <CGAL/DGG_VTP_3/internal/Pseudo_source_states.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
@@ -49,14 +50,14 @@ public:
   };
   static Index no_origin() { return Index(-1); }
 
-  // `rho`: the key ratio of the propagation (1: exact)
-  Propagation_vertices(const Mesh& mesh, FT rho)
+  // `keys`: the key ratio of the propagation
+  Propagation_vertices(const Mesh& mesh, const Key_ratio<FT>& keys)
     : m_mesh(mesh)
-    , m_rho(rho)
+    , m_keys(keys)
     , distance(mesh.number_of_vertices(), Number_type_math<FT>::infinity())
     , incoming(mesh.number_of_vertices())
     , is_source(mesh.number_of_vertices(), 0)
-    , pseudo_sources(mesh, rho > FT(1))
+    , pseudo_sources(mesh, !keys.is_exact())
   {}
 
   void record(bool origins, bool arrivals)
@@ -123,12 +124,12 @@ public:
   FT key(Index v, FT d, bool own) const
   {
     const bool emits = is_source[v] || (own ? pseudo_sources.emits(v) : m_mesh.is_exact_pseudo_source(v));
-    return emits && m_rho > FT(1) ? d / m_rho : d;
+    return emits ? m_keys.key(d) : d;
   }
 
 private:
   const Mesh& m_mesh;
-  const FT m_rho;
+  const Key_ratio<FT> m_keys;
 
 public:
   std::vector<FT> distance;                       // best distance found so far (+inf: not reached)

@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Key_ratio.h>
 #include <CGAL/DGG_VTP_3/internal/Surface_point.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
@@ -65,10 +66,10 @@ class Pseudo_source_emission
   using T = Tuning<FT>;
 
 public:
-  // `rho`: the key ratio of the windows (1: exact)
-  Pseudo_source_emission(const Mesh& mesh, FT rho)
+  // `keys`: the key ratio of the windows
+  Pseudo_source_emission(const Mesh& mesh, const Key_ratio<FT>& keys)
     : m_mesh(mesh)
-    , m_rho(rho)
+    , m_keys(keys)
     , m_shadow_widening(small_turn(T::shadow_widening()))
   {}
 
@@ -147,7 +148,7 @@ private:
     out.relax(m_mesh.source(prev), dv + m_mesh.length(prev), prev, Point{number<FT>(1), number<FT>(0)}, v);
     const Index t = m_mesh.opposite(across);
     if(t != Mesh::no_halfedge)
-      out.add_window(t, window_across_corner(m_mesh, h, dv, m_rho, v));
+      out.add_window(t, window_across_corner(m_mesh, h, dv, m_keys, v));
   }
 
   template <class Out>
@@ -167,12 +168,12 @@ private:
       const Index t = m_mesh.opposite(e);
       if(b[(k + 2) % 3] != FT(0) && t != Mesh::no_halfedge) // not on this edge
         out.add_window(t, window_from_point(m_mesh, e, q, number<FT>(0), length(q - Point{m_mesh.length(e), number<FT>(0)}),
-                                            to_source, m_rho, origin));
+                                            to_source, m_keys, origin));
     }
   }
 
   const Mesh& m_mesh;
-  const FT m_rho;                // key ratio of the windows (1: exact)
+  const Key_ratio<FT> m_keys;    // the key ratio of the windows
   const Point m_shadow_widening; // the turn added on both sides of a shadow, for rounding
 };
 

@@ -33,6 +33,7 @@
 #include <boost/range/irange.hpp>
 
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -238,12 +239,19 @@ private:
     return s;
   }
 
+  // the shortest text that reads back as `x` (-1e-09, not std::to_string's -0.000000)
+  static std::string as_given(double x)
+  {
+    char text[32];
+    return std::string(text, std::to_chars(text, text + sizeof(text), x).ptr);
+  }
+
   template <class NamedParameters>
   static Computation_FT checked_accuracy(const NamedParameters& np)
   {
     const double accuracy = parameters::choose_parameter(parameters::get_parameter(np, internal_np::accuracy), 0.);
     if(!(accuracy >= 0. && accuracy <= maximal_accuracy))
-      throw std::invalid_argument("the accuracy must be a number in [0, 1] (0: exact); got " + std::to_string(accuracy));
+      throw std::invalid_argument("the accuracy must be a number in [0, 1] (0: exact); got " + as_given(accuracy));
     return number<Computation_FT>(accuracy);
   }
 
@@ -253,7 +261,7 @@ private:
     const double max_distance = parameters::choose_parameter(
       parameters::get_parameter(np, internal_np::max_distance_t()), std::numeric_limits<double>::infinity());
     if(!(max_distance >= 0.))
-      throw std::invalid_argument("the maximum distance must be a number >= 0");
+      throw std::invalid_argument("the maximum distance must be a number >= 0; got " + as_given(max_distance));
     query.max_distance = max_distance < std::numeric_limits<double>::infinity()
                            ? number<Computation_FT>(max_distance)
                            : Number_type_math<Computation_FT>::infinity();

@@ -15,11 +15,14 @@
 #include <CGAL/license/DGG_VTP_3.h>
 
 #include <CGAL/DGG_VTP_3/internal/Distance_bound.h>
+#include <CGAL/DGG_VTP_3/internal/Key_ratio.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
+#include <cstdint>
+#include <limits>
 
 namespace CGAL {
 namespace DGG_VTP_3 {
@@ -30,27 +33,27 @@ namespace internal {
 
 // The full-edge window that a pseudo-source at `p` (in the frame of halfedge `e`, inside its face),
 // at distance `sigma`, sends across the edge of `e`, in the frame of the neighbouring halfedge
-// (the caller checks that there is one). In DGG-VTP (key ratio `rho` > 1) its CH-relay vertices
+// (the caller checks that there is one). In DGG-VTP (`keys` not exact) its CH-relay vertices
 // are the ends of the edge (paper, Algorithm 1, line 3), at distances `relay_left` (from the
 // target of `e`, the start of the neighbouring halfedge) and `relay_right`, and its distance
 // bound follows from them; the exact mode has neither.
 template <class FT>
 inline Window<FT> window_from_point(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index e,
-                                    const Vec2<FT>& p, FT sigma, FT relay_left, FT relay_right, FT rho,
-                                    std::uint32_t origin)
+                                    const Vec2<FT>& p, FT sigma, FT relay_left, FT relay_right,
+                                    const Key_ratio<FT>& keys, std::uint32_t origin)
 {
   const FT len = mesh.length(e);
-  const bool dgg = rho > FT(1);
+  const bool dgg = !keys.is_exact();
   Window<FT> w;
   w.b0 = number<FT>(0);
   w.b1 = len;
   w.source = Vec2<FT>{len - p.x, -p.y}; // the same triangle seen from the other side
-  w.sigma = dgg ? sigma / rho : sigma;
+  w.sigma = keys.key(sigma);
   w.relay_left = dgg ? relay_left : number<FT>(0);
   w.relay_right = dgg ? relay_right : number<FT>(0);
   w.relay_left_vertex = mesh.target(e);
   w.relay_right_vertex = mesh.source(e);
-  w.d_max = distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, rho);
+  w.set_bound(distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, keys));
   w.origin = origin;
   return w;
 }
@@ -59,12 +62,12 @@ inline Window<FT> window_from_point(const Unfolded_mesh<FT>& mesh, typename Unfo
 // sends across the edge opposite it.
 template <class FT>
 inline Window<FT> window_across_corner(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index h, FT sigma,
-                                       FT rho, std::uint32_t origin)
+                                       const Key_ratio<FT>& keys, std::uint32_t origin)
 {
   using Mesh = Unfolded_mesh<FT>;
   const auto across = Mesh::next(h); // the edge opposite the pseudo-source; its apex
   return window_from_point(mesh, across, mesh.apex(across), sigma, mesh.length(Mesh::prev(h)), mesh.length(h),
-                           rho, origin);
+                           keys, origin);
 }
 
 // The child of `w` on edge (a, c), in the frame of the neighbouring halfedge a -> c (of length
@@ -103,27 +106,25 @@ inline bool right_child(const Window<FT>& w, const Vec2<FT>& b, const Vec2<FT>& 
 
 // A child whose boundary ray grazes vertex `v`, at `distance` from the pseudo-source, takes it
 // as its CH-relay vertex on that side (paper, Algorithm 1, line 22): `relay` and `relay_vertex`
-// are the child's fields of that side. Only DGG-VTP (key ratio `rho` > 1) has relays.
+// are the child's fields of that side. Only DGG-VTP has relays.
 template <class FT>
-inline void take_relay(Window<FT>& child, FT& relay, std::uint32_t& relay_vertex, FT distance, std::uint32_t v, FT rho)
+inline void take_relay(Window<FT>& child, FT& relay, std::uint32_t& relay_vertex, FT distance, std::uint32_t v,
+                       const Key_ratio<FT>& keys)
 {
-  if(!(rho > FT(1)))
+  if(keys.is_exact())
     return;
   relay = distance;
   relay_vertex = v;
-  child.bound_is_stale = true;
+  child.d_max = std::numeric_limits<float>::quiet_NaN();
 }
 
 // The distance bound follows the relays a window has now; a bound of relays it no longer has is
 // not kept, even if smaller: their segments to the window may leave its beam.
 template <class FT>
-inline const Window<FT>& with_bound(Window<FT>& w, FT rho)
+inline const Window<FT>& with_bound(Window<FT>& w, const Key_ratio<FT>& keys)
 {
-  if(w.bound_is_stale)
-  {
-    w.d_max = distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, rho);
-    w.bound_is_stale = false;
-  }
+  if(w.bound_is_stale())
+    w.set_bound(distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, keys));
   return w;
 }
 

@@ -81,9 +81,9 @@ public:
     : m_mesh(mesh)
     , m_partition(partition)
     , m_scheduler(partition, mesh.number_of_vertices())
-    , m_rho(T::key_ratio(accuracy))
-    , m_emission(mesh, m_rho)
-    , m_vertices(mesh, m_rho)
+    , m_keys(accuracy)
+    , m_emission(mesh, m_keys)
+    , m_vertices(mesh, m_keys)
     , m_in_region(mesh.number_of_faces(), 0)
     , m_scheduled(mesh.number_of_halfedges(), 0)
   {
@@ -183,7 +183,7 @@ private:
   // nearest queued vertex of all patches
   bool query_is_answered(FT nearest) const
   {
-    return nothing_pending_below(early_termination_limit(*m_query, m_targets, m_mesh, m_vertices.distance), nearest, m_rho,
+    return nothing_pending_below(early_termination_limit(*m_query, m_targets, m_mesh, m_vertices.distance), nearest, m_keys,
                                  m_patches);
   }
 
@@ -296,7 +296,7 @@ private:
         if(!trim_by_end_vertices(w, propagation.m_mesh.length(h), ends.a, ends.b))
           return;
       }
-      propagation.add_window(patch, h, with_bound(w, propagation.m_rho));
+      propagation.add_window(patch, h, with_bound(w, propagation.m_keys));
     }
     void count_pseudo_source() { ++patch.stats.pseudo_sources; }
   };
@@ -368,7 +368,7 @@ private:
     std::size_t kept = 0;
     for(Win& w : p.buffer)
     {
-      if(distance_to_interval(w.source, w.b0, w.b1) > w.d_max)
+      if(w.beyond_bound(distance_to_interval(w.source, w.b0, w.b1)))
         stop_at_bound(p, w);
       else if(trim_by_end_vertices(w, len, ends.a, ends.b))
         p.buffer[kept++] = w;
@@ -376,11 +376,11 @@ private:
     p.buffer.resize(kept);
     trim_overlapping_windows(p.buffer, p.starts);
     if(m_targets.in_face(Mesh::face(h)))
-      m_targets.cross(m_mesh, h, p.buffer, m_rho);
+      m_targets.cross(m_mesh, h, p.buffer, m_keys);
 
     // "one angle, two sides": the window that reaches c best, B, splits the face along its path
     // to c, and the other windows' children keep to their side of it (see sides_of_best_path)
-    const Best_toward_apex<FT> best = best_toward_apex(p.buffer, c, m_rho, p.toward_apex);
+    const Best_toward_apex<FT> best = best_toward_apex(p.buffer, c, m_keys, p.toward_apex);
     if(best.value_window != nullptr) // lines 21-24 for the apex
     {
       // arrival direction at c, in the frame of c's corner prev(h), which starts along c -> a
@@ -408,10 +408,10 @@ private:
          left_child(w, c, x, keep.left_end, m_mesh.length(Mesh::prev(h)), child))
       {
         if(x < keep.left_end)
-          take_relay(child, child.relay_right, child.relay_right_vertex, length(c - w.source), apex_vertex, m_rho);
+          take_relay(child, child.relay_right, child.relay_right_vertex, length(c - w.source), apex_vertex, m_keys);
         else if(keep.left_end < w.b1)
           child.drop_relay(child.relay_right);
-        add_window(p, left, with_bound(child, m_rho));
+        add_window(p, left, with_bound(child, m_keys));
         if(x < keep.left_end)
           anticipate_stop(p, child, apex_vertex, m_mesh.length(Mesh::prev(h)));
       }
@@ -419,10 +419,10 @@ private:
          right_child(w, b, c, x, keep.right_start, m_mesh.length(Mesh::next(h)), child))
       {
         if(keep.right_start < x)
-          take_relay(child, child.relay_left, child.relay_left_vertex, length(c - w.source), apex_vertex, m_rho);
+          take_relay(child, child.relay_left, child.relay_left_vertex, length(c - w.source), apex_vertex, m_keys);
         else if(w.b0 < keep.right_start)
           child.drop_relay(child.relay_left);
-        add_window(p, right, with_bound(child, m_rho));
+        add_window(p, right, with_bound(child, m_keys));
         if(keep.right_start < x)
           anticipate_stop(p, child, apex_vertex, m_mesh.length(Mesh::next(h)));
       }
@@ -459,7 +459,7 @@ private:
   // popped, in distance order, rather than after the windows that its own would have pruned.
   void anticipate_stop(Patch& p, const Win& w, Index v, FT edge)
   {
-    if(is_dgg() && w.d_max < distance_to_interval(w.source, w.b0, w.b1) + T::stop_anticipation() * edge)
+    if(w.beyond_bound(distance_to_interval(w.source, w.b0, w.b1) + T::stop_anticipation() * edge))
       make_emitter(p, v);
   }
 
@@ -471,14 +471,14 @@ private:
       p.queue.push(Queue_entry(m_vertices.distance[v], v));
   }
 
-  bool is_dgg() const { return m_rho > FT(1); }
+  bool is_dgg() const { return !m_keys.is_exact(); }
 
   // ---------------------------------------------------------------------------------------------
 
   const Mesh& m_mesh;
   const Patch_partition<FT>& m_partition;
   Scheduler m_scheduler;
-  const FT m_rho;                     // key ratio: 1 + epsilon (1: exact)
+  const Key_ratio<FT> m_keys;         // rho = 1 + epsilon (1: exact) and its constants
   const Pseudo_source_emission<FT> m_emission; // what pseudo-sources send out, and where
   Propagation_vertices<FT> m_vertices; // per vertex: distance, arrivals, (pseudo-)source
   std::vector<char> m_in_region;      // per face: inside the propagation region R

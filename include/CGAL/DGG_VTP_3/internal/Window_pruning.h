@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Key_ratio.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
@@ -113,7 +114,7 @@ struct Best_toward_apex
 };
 
 // Every window of `windows` seen from the apex c (into `toward_apex`), and the best of them (key
-// ratio `rho`). A window lights c also when its crossing misses its interval by no more than
+// ratio `keys`). A window lights c also when its crossing misses its interval by no more than
 // rounding: when c lies exactly on the line from a pseudo-source through a vertex (a regular
 // grid), the windows on either side of that vertex meet along the ray to c, their ends and the
 // crossing each rounded on their own, and the crossing may fall in a gap of a few ulps between
@@ -121,13 +122,13 @@ struct Best_toward_apex
 // (c's distance too long by up to 0.14%). A ray that misses by rounding stands for a real path,
 // along the window's end ray, longer only by a term of the second order in that miss.
 template <class FT>
-inline Best_toward_apex<FT> best_toward_apex(const std::vector<Window<FT>>& windows, const Vec2<FT>& c, FT rho,
-                                             std::vector<Toward_apex<FT>>& toward_apex)
+inline Best_toward_apex<FT> best_toward_apex(const std::vector<Window<FT>>& windows, const Vec2<FT>& c,
+                                             const Key_ratio<FT>& keys, std::vector<Toward_apex<FT>>& toward_apex)
 {
   using Math = Number_type_math<FT>;
   Best_toward_apex<FT> best{nullptr, Math::infinity(), number<FT>(0), nullptr, Math::infinity()};
   toward_apex.resize(windows.size());
-  const FT rho_minus_one = rho - number<FT>(1);
+  const FT rho_minus_one = keys.rho() - number<FT>(1);
   for(std::size_t i = 0; i < windows.size(); ++i)
   {
     const Window<FT>& w = windows[i];

@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Key_ratio.h>
 #include <CGAL/DGG_VTP_3/internal/Point_targets.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
@@ -68,9 +69,9 @@ FT early_termination_limit(const Propagation_query<FT>& query, const Point_targe
 }
 
 // Whether nothing pending can go below `limit` (beyond rounding), given the nearest queued key of
-// all patches and each patch's window lists, whose windows' key ratio is `rho`.
+// all patches and each patch's window lists, whose windows' key ratio is `keys`.
 template <class FT, class Patches>
-bool nothing_pending_below(FT limit, FT nearest_queued, FT rho, const Patches& patches)
+bool nothing_pending_below(FT limit, FT nearest_queued, const Key_ratio<FT>& keys, const Patches& patches)
 {
   if(!(limit < Number_type_math<FT>::infinity()))
     return false;
@@ -79,7 +80,7 @@ bool nothing_pending_below(FT limit, FT nearest_queued, FT rho, const Patches& p
     return false;
   for(const auto& p : patches)
     if(!p.lists.all_windows([&](const Window<FT>& w) {
-         return rho * w.sigma + distance_to_interval(w.source, w.b0, w.b1) > above;
+         return keys.distance(w.sigma) + distance_to_interval(w.source, w.b0, w.b1) > above;
        }))
       return false;
   return true;

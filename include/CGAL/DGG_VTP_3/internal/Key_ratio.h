@@ -1,0 +1,59 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// All rights reserved.
+//
+// This file is part of DGG_VTP_3, a package written for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_KEY_RATIO_H
+#define CGAL_DGG_VTP_3_INTERNAL_KEY_RATIO_H
+
+#include <CGAL/license/DGG_VTP_3.h>
+
+#include <CGAL/DGG_VTP_3/internal/Tuning.h>
+#include <CGAL/DGG_VTP_3/internal/number_type_math.h>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// The key ratio rho of a propagation (Tuning::key_ratio): a pseudo-source at distance d sends its
+// windows out with the key d / rho, and a window of key sigma gives the distance rho sigma (see
+// Window and the manual's argument), and the constants of the distance bound derived from rho,
+// computed once. rho = 1 is the exact algorithm: keys are distances, bit for bit.
+template <class FT>
+class Key_ratio
+{
+public:
+  explicit Key_ratio(FT accuracy)
+    : m_rho(Tuning<FT>::key_ratio(accuracy))
+    , m_lambda(number<FT>(1) / m_rho)
+    , m_one_minus_lambda((m_rho - number<FT>(1)) / m_rho) // without cancellation for a small epsilon
+    , m_k(m_one_minus_lambda * (number<FT>(1) + m_lambda) / number<FT>(2))
+  {}
+
+  bool is_exact() const { return !(m_rho > FT(1)); }
+  FT rho() const { return m_rho; }
+  // the key of distance `d`
+  FT key(FT d) const { return is_exact() ? d : d * m_lambda; }
+  // the distance of key `sigma`
+  FT distance(FT sigma) const { return is_exact() ? sigma : m_rho * sigma; }
+
+  // 1 / rho, 1 - 1 / rho, and k = (1 - 1 / rho^2) / 2 (see distance_bound)
+  FT lambda() const { return m_lambda; }
+  FT one_minus_lambda() const { return m_one_minus_lambda; }
+  FT k() const { return m_k; }
+
+private:
+  FT m_rho, m_lambda, m_one_minus_lambda, m_k;
+};
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_KEY_RATIO_H
