@@ -29,6 +29,7 @@
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/npy.h>
 #include <dggvtp/output_paths.h>
+#include <dggvtp/query_places.h>
 #include <dggvtp/arguments.h>
 #include <dggvtp/single_value_options.h>
 #include <dggvtp/version.h>
@@ -954,24 +955,6 @@ int collectively(const dggvtp::Communicator& comm, const std::function<void()>& 
   return comm.max(status);
 }
 
-// The rows that leave vertices unreachable (inf), counted as they are computed, for one warning.
-struct Unreachable_count
-{
-  std::atomic<std::size_t> rows{0}; // rows with an inf
-  std::atomic<std::size_t> most{0}; // the most infs in one row
-
-  void add(const std::vector<double>& row)
-  {
-    const std::size_t n = std::size_t(std::count_if(row.begin(), row.end(), [](double d) { return std::isinf(d); }));
-    if(n == 0)
-      return;
-    ++rows;
-    for(std::size_t m = most.load(); m < n && !most.compare_exchange_weak(m, n);)
-    {
-    }
-  }
-};
-
 struct Phase_one
 {
   Options options;
@@ -1072,7 +1055,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     return status;
   const Clock::time_point t_compute = Clock::now();
   std::size_t computed = 0; // by this rank
-  Unreachable_count unreachable; // of this rank's rows
+  dggvtp::Unreachable_rows unreachable; // of this rank's rows
   double seconds_own = 0.;  // this rank's rows, without waiting for the others
   try
   {
@@ -1227,10 +1210,11 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   // even with --quiet: a scan in pieces or a stray vertex is worth knowing before using the rows
   const double rows_unreachable = std::accumulate(unreachable_rows.begin(), unreachable_rows.end(), 0.);
   if(rows_unreachable > 0.)
-    std::cerr << "warning: " << std::size_t(rows_unreachable) << " of the " << computed_total
-              << " rows computed leave vertices unreachable (inf), up to "
-              << std::size_t(*std::max_element(unreachable_most.begin(), unreachable_most.end())) << " of " << one.file_vertices
-              << " in a row: in other connected components than the row's source, or used by no face\n";
+    std::cerr << "warning: "
+              << dggvtp::unreachable_rows_warning(std::size_t(rows_unreachable), computed_total,
+                                                  std::size_t(*std::max_element(unreachable_most.begin(), unreachable_most.end())),
+                                                  one.file_vertices)
+              << "\n";
   const double seconds_total = seconds_since(t_start);
   const auto json_list = [](const std::vector<double>& values, const char* format) {
     std::string out;
