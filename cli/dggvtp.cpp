@@ -464,7 +464,10 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
   }();
   run.seconds_locate = seconds_since(t0);
   for(const auto& m : q.moved_points)
-    run.warnings.push_back(std::string(m.option) + " " + number_text(m.point[0]) + " " + number_text(m.point[1]) + " " +
+    run.warnings.push_back(std::string(m.range == dggvtp::Place_range::source   ? "--source-point"
+                                       : m.range == dggvtp::Place_range::target ? "--target-point"
+                                                                                : "--path-to-point") +
+                           " " + number_text(m.point[0]) + " " + number_text(m.point[1]) + " " +
                            number_text(m.point[2]) + " is " + number_text(m.distance) +
                            " away from the surface: taken at the nearest point of the surface");
   if(q.sources.empty()) // the library refuses a query without sources, rightly: nothing to propagate
@@ -742,7 +745,7 @@ int run_main(int argc, char** argv)
   {
     throw dggvtp::Input_error(dggvtp::with_repair_hint(e.what(), repair));
   }
-  repaired.apply(run.distances, run.labels);
+  repaired.apply(run.distances.empty() ? nullptr : run.distances.data(), run.labels.empty() ? nullptr : run.labels.data());
   const double seconds_load = seconds_read + run.seconds_make_mesh;
   if(!options.quiet)
     for(const std::string& line : soup.repairs)

@@ -383,6 +383,24 @@ inline std::vector<std::size_t> solver_vertices_of(const Loaded_soup& soup, std:
   return out;
 }
 
+// The solver vertices of each file vertex of `file_vertices` (as solver_vertices_of() gives them),
+// in one pass over the solver's vertices
+inline std::vector<std::vector<std::size_t>> solver_vertex_sets(const Loaded_soup& soup,
+                                                               const std::vector<std::size_t>& file_vertices)
+{
+  std::vector<std::size_t> set_of(soup.file_vertices, file_vertices.size()); // the last set of each
+  for(std::size_t k = 0; k < file_vertices.size(); ++k)
+    set_of[file_vertices[k]] = k;
+  std::vector<std::vector<std::size_t>> sets(file_vertices.size());
+  for(std::size_t i = 0; i < soup.file_vertex_of.size(); ++i)
+    if(set_of[soup.file_vertex_of[i]] < file_vertices.size())
+      sets[set_of[soup.file_vertex_of[i]]].push_back(i);
+  for(std::size_t k = 0; k < file_vertices.size(); ++k) // a file vertex given twice
+    if(set_of[file_vertices[k]] != k)
+      sets[k] = sets[set_of[file_vertices[k]]];
+  return sets;
+}
+
 // Per file vertex, the smallest of the distances `d` (per mesh vertex) of the vertices that stand
 // for it; +infinity for a file vertex no face uses.
 template <class FT>

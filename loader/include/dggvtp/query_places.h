@@ -144,6 +144,20 @@ private:
   Tree m_tree;
 };
 
+// The ranges of places of a query: dggvtp's --source, --target and --path-to options
+enum class Place_range { source, target, path_target };
+
+// A point taken at the nearest point of the surface farther than 1e-6 times the diagonal of the
+// mesh's bounding box from where it was given (users are told: a point off the surface may be a
+// mistake)
+struct Moved_point
+{
+  Place_range range;
+  std::size_t place; // its number in its range
+  std::array<double, 3> point;
+  double distance;   // how far it was moved
+};
+
 // The places of a query (sources, targets, path targets) in the solver's numbering, as ranges of
 // Element: solver vertices, or the solver's Face_locations when a point is given (a range holds one type; a vertex is then the
 // corner of one of its triangles, the same source or target bit for bit). A vertex of the file is
@@ -165,15 +179,6 @@ struct Query_places
   std::vector<std::pair<std::size_t, std::size_t>> isolated_sources;
   std::vector<Element> targets;           // the query's: those of --target, then of --path-to
   std::vector<Target> target_places, path_places; // per option
-  // a point taken at the nearest point of the surface farther than 1e-6 times the diagonal of the
-  // mesh's bounding box from where it was given (users are told: a point off the surface may be a mistake)
-  struct Moved_point
-  {
-    const char* option; // --source-point, --target-point or --path-to-point
-    std::size_t place;  // its number in the query's sources, targets or path targets
-    std::array<double, 3> point;
-    double distance;    // how far it was moved
-  };
   std::vector<Moved_point> moved_points;
 };
 
@@ -211,7 +216,7 @@ Query_places<Solver, Element> query_places(const Loaded_soup& soup, const Point_
       range.push_back(v);
     return true;
   };
-  const auto add_point = [&](const Place& p, const char* option, std::size_t place, std::vector<Element>& range) {
+  const auto add_point = [&](const Place& p, Place_range kind, std::size_t place, std::vector<Element>& range) {
     if constexpr(by_location)
     {
       if(p.is_face_point)
@@ -224,7 +229,7 @@ Query_places<Solver, Element> query_places(const Loaded_soup& soup, const Point_
       range.emplace_back(l.first, std::array<FT, 3>{FT(l.second[0]), FT(l.second[1]), FT(l.second[2])});
       const double moved = locator->distance(p.point, l);
       if(moved > 1e-6 * locator->diagonal())
-        q.moved_points.push_back(typename Places::Moved_point{option, place, p.point, moved});
+        q.moved_points.push_back(Moved_point{kind, place, p.point, moved});
     }
   };
 
@@ -233,7 +238,7 @@ Query_places<Solver, Element> query_places(const Loaded_soup& soup, const Point_
     const Place& p = sources[option];
     if(p.is_point || p.is_face_point)
     {
-      add_point(p, "--source-point", option, q.sources);
+      add_point(p, Place_range::source, option, q.sources);
       q.source_option.push_back(option);
     }
     else
@@ -254,7 +259,7 @@ Query_places<Solver, Element> query_places(const Loaded_soup& soup, const Point_
       if(p.is_point || p.is_face_point)
       {
         t.point = q.targets.size();
-        add_point(p, places == &targets ? "--target-point" : "--path-to-point", k, q.targets);
+        add_point(p, places == &targets ? Place_range::target : Place_range::path_target, k, q.targets);
       }
       else
       {
@@ -362,14 +367,20 @@ std::vector<std::pair<Polyline, double>> trace_paths(const Tree& tree, const Pla
   return out;
 }
 
-// how many of `values` are +infinity
+// how many of the values in [first, last) are +infinity
+template <class Iterator>
+std::size_t count_infinite(Iterator first, Iterator last)
+{
+  std::size_t n = 0;
+  for(; first != last; ++first)
+    n += std::isinf(*first) ? 1 : 0;
+  return n;
+}
+
 template <class Range>
 std::size_t count_infinite(const Range& values)
 {
-  std::size_t n = 0;
-  for(const auto& v : values)
-    n += std::isinf(v) ? 1 : 0;
-  return n;
+  return count_infinite(std::begin(values), std::end(values));
 }
 
 // The rows (fields of one source each) that leave vertices unreachable (inf), counted as they are
@@ -379,10 +390,10 @@ struct Unreachable_rows
   std::atomic<std::size_t> rows{0}; // rows with an inf
   std::atomic<std::size_t> most{0}; // the most infs in one row
 
-  template <class Range>
-  void add(const Range& row)
+  template <class Iterator>
+  void add(Iterator first, Iterator last)
   {
-    const std::size_t n = count_infinite(row);
+    const std::size_t n = count_infinite(first, last);
     if(n == 0)
       return;
     ++rows;

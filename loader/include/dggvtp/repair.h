@@ -48,16 +48,28 @@ struct Repair_record
     return l->second;
   }
 
-  // per file vertex: lost vertices take their stand-in's values, or nan and -1
-  void apply(std::vector<double>& distances, std::vector<long long>& labels) const
+  // per file vertex (either may be null: none): lost vertices take their stand-in's values, or nan
+  // and -1
+  void apply(double* distances, long long* labels) const
   {
     for(const auto& [v, to] : lost)
     {
-      if(!distances.empty())
+      if(distances)
         distances[v] = to == removed ? std::numeric_limits<double>::quiet_NaN() : distances[to];
-      if(!labels.empty())
+      if(labels)
         labels[v] = to == removed ? -1 : labels[to];
     }
+  }
+
+  // the file vertices merged into each file vertex (the lost vertices at its place), for results
+  // that are not an array per file vertex (sparse rows)
+  std::map<std::size_t, std::vector<std::size_t>> merged_into() const
+  {
+    std::map<std::size_t, std::vector<std::size_t>> out;
+    for(const auto& [v, to] : lost)
+      if(to != removed)
+        out[to].push_back(v);
+    return out;
   }
 };
 
