@@ -107,10 +107,12 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          crossed
   --stats FILE           one JSON object: sizes, times, window counts, peak memory
   --repair               repair the mesh with CGAL's Polygon_mesh_processing before the input
-                         checks: stitch_borders (coincident border edges), remove_degenerate_faces
-                         (zero length edges, zero area), remove_almost_degenerate_faces (angles
-                         within 0.1 degree of flat, edges 1e4 times shorter than their face's
-                         longest and under 1e-4 of the bounding box's diagonal) and
+                         checks, once the faces that repeat a vertex are dropped (refused
+                         without --repair): stitch_borders (coincident border edges),
+                         remove_degenerate_faces (zero length edges, zero area),
+                         remove_almost_degenerate_faces (angles within 0.1 degree of flat,
+                         edges 1e4 times shorter than their face's longest and under 1e-4 of
+                         the bounding box's diagonal) and
                          remove_isolated_vertices; one 'warning:' line per kind of repair with
                          its counts. Results stay per vertex of the file: a vertex merged with
                          another at its place takes its distance and label, a removed one is nan
@@ -148,7 +150,8 @@ of the file, the smallest over the copies of a split vertex (a source or target 
 all its copies). Vertices no face uses, and vertices of other
 connected components than the sources', are unreachable: inf. An unreadable or empty file, a
 non-finite coordinate, a mesh too large for a double (its bounding box, or a face's squared
-edge lengths or area, overflow: scale it down), a face with fewer than 3 or repeated vertices,
+edge lengths or area, overflow: scale it down), a face with fewer than 3 or repeated vertices
+(--repair drops the latter),
 a degenerate face (zero length edge or zero area), a sliver (an edge more than 1e10 times
 longer than the height on it),
 an edge shorter than 1e-3 machine epsilons times the mesh's size (2.2e-19 of it in double),

@@ -18,6 +18,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -106,12 +107,21 @@ struct Geodesic_solver
     return q;
   }
 
+  // The places of three arguments: vertices, 3D points and points on faces; `names`: theirs, and
+  // what a vertex of the first is called in messages
+  Named_places places(const Vertices& vertices, const Points& points, const Face_points& face_points,
+                      const std::array<const char*, 4>& names) const
+  {
+    Named_places out;
+    out.add(vertex_places(vertices, names[3], this->vertices()), names[0]);
+    out.add(point_places(points, names[1]), names[1]);
+    out.add(face_point_places(face_points, names[2], solver->number_of_faces()), names[2]);
+    return out;
+  }
+
   Named_places sources(const Vertices& vertices, const Points& points, const Face_points& face_points) const
   {
-    Named_places s;
-    s.add(vertex_places(vertices, "source", this->vertices()), "sources");
-    s.add(point_places(points, "points"), "points");
-    s.add(face_point_places(face_points, "face_points", solver->number_of_faces()), "face_points");
+    Named_places s = places(vertices, points, face_points, {"sources", "points", "face_points", "source"});
     if(s.places.empty())
       bad("no source given (sources, points or face_points)");
     return s;
@@ -119,10 +129,7 @@ struct Geodesic_solver
 
   Named_places targets(const Vertices& vertices, const Points& points, const Face_points& face_points) const
   {
-    Named_places t;
-    t.add(vertex_places(vertices, "target", this->vertices()), "targets");
-    t.add(point_places(points, "target_points"), "target_points");
-    t.add(face_point_places(face_points, "target_face_points", solver->number_of_faces()), "target_face_points");
+    Named_places t = places(vertices, points, face_points, {"targets", "target_points", "target_face_points", "target"});
     if(t.places.empty())
       bad("no target given (targets, target_points or target_face_points)");
     return t;
@@ -158,6 +165,24 @@ struct Geodesic_solver
 };
 
 dggvtp::Repair_option repair_option(bool repair) { return {"repair=True", repair}; }
+
+// The method `name` of `c` that takes the arguments of the queries to several targets and answers
+// f(solver, query, sources, targets)
+template <class Class, class F>
+void def_targets_query(Class& c, const char* name, F f, const char* doc)
+{
+  c.def(
+    name,
+    [f](const Geodesic_solver& s, const Vertices& sources, const Points& points, const Face_points& face_points,
+        const Vertices& targets, const Points& target_points, const Face_points& target_face_points, double epsilon,
+        double max_distance, long threads) {
+      Query q = s.query(epsilon, max_distance, threads);
+      return f(s, q, s.sources(sources, points, face_points), s.targets(targets, target_points, target_face_points));
+    },
+    "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
+    "targets"_a = py::none(), "target_points"_a = py::none(), "target_face_points"_a = py::none(), "epsilon"_a = 0.,
+    "max_distance"_a = infinity, "threads"_a = 1, doc);
+}
 
 std::pair<py::array_t<double>, py::array_t<std::int64_t>> read_mesh(const Path& path, bool repair)
 {
@@ -232,7 +257,8 @@ PYBIND11_MODULE(_dggvtp, m)
 
   m.def("read_mesh", &read_mesh, "path"_a, py::kw_only(), "repair"_a = false, doc::read_mesh);
 
-  py::class_<Geodesic_solver>(m, "GeodesicSolver", doc::solver)
+  py::class_<Geodesic_solver> solver(m, "GeodesicSolver", doc::solver);
+  solver
     .def(py::init([](const Array_like& V, const Array_like& F, const std::string& precision, bool repair) {
            if(precision != "double" && precision != "float")
              bad("precision must be 'double' or 'float', not '" + precision + "'");
@@ -328,63 +354,46 @@ PYBIND11_MODULE(_dggvtp, m)
         return {csr_matrix<std::int64_t>(rows, s.vertices())};
       },
       "max_distance"_a, "sources"_a = py::none(), py::kw_only(), "epsilon"_a = 0., "threads"_a = 1,
-      doc::local_distance_matrix)
-    .def(
-      "target_distances",
-      [](const Geodesic_solver& s, const Vertices& sources, const Points& points, const Face_points& face_points,
-         const Vertices& targets, const Points& target_points, const Face_points& target_face_points, double epsilon,
-         double max_distance, long threads) {
-        Query q = s.query(epsilon, max_distance, threads);
-        const Named_places named_sources = s.sources(sources, points, face_points);
-        const Named_places named_targets = s.targets(targets, target_points, target_face_points);
-        q.sources = named_sources.places;
-        q.targets = named_targets.places;
-        std::vector<double> t;
-        std::vector<dggvtp::Moved_point> moved;
-        {
-          py::gil_scoped_release unlocked;
-          t = s.solver->target_distances(q, moved);
-        }
-        const Named_places* ranges[3] = {&named_sources, &named_targets, nullptr};
-        warn_moved(moved, ranges);
-        warn_unreachable(dggvtp::count_infinite(t), t.size(), "targets", max_distance);
-        return py::array_t<double>(py::ssize_t(t.size()), t.data());
-      },
-      "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
-      "targets"_a = py::none(), "target_points"_a = py::none(), "target_face_points"_a = py::none(),
-      "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1, doc::target_distances)
-    .def(
-      "shortest_paths",
-      [](const Geodesic_solver& s, const Vertices& sources, const Points& points, const Face_points& face_points,
-         const Vertices& targets, const Points& target_points, const Face_points& target_face_points, double epsilon,
-         double max_distance, long threads) {
-        Query q = s.query(epsilon, max_distance, threads);
-        return s.paths(q, s.sources(sources, points, face_points),
-                       s.targets(targets, target_points, target_face_points));
-      },
-      "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
-      "targets"_a = py::none(), "target_points"_a = py::none(), "target_face_points"_a = py::none(),
-      "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1, doc::shortest_paths)
-    .def(
-      "shortest_path",
-      [](const Geodesic_solver& s, const Vertices& sources, const Points& points, const Face_points& face_points,
-         const Vertices& target, const Points& target_point, const Face_points& target_face_point, double epsilon,
-         double max_distance, long threads) {
-        const char* one = "give one target: target (a vertex), target_point (3 coordinates) or target_face_point "
-                          "((face, barycentric))";
-        Query q = s.query(epsilon, max_distance, threads);
-        Named_places t;
-        t.add(vertex_places(target, "target", s.vertices()), "target");
-        t.add(point_places(target_point, "target_point"), "target_point");
-        t.add(face_point_places(target_face_point, "target_face_point", s.solver->number_of_faces()),
-              "target_face_point");
-        if(t.places.size() != 1)
-          bad(one);
-        return s.paths(q, s.sources(sources, points, face_points), t).first.front();
-      },
-      "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
-      "target"_a = py::none(), "target_point"_a = py::none(), "target_face_point"_a = py::none(), "epsilon"_a = 0.,
-      "max_distance"_a = infinity, "threads"_a = 1, doc::shortest_path)
+      doc::local_distance_matrix);
+  def_targets_query(
+    solver, "target_distances",
+    [](const Geodesic_solver& s, Query& q, const Named_places& named_sources, const Named_places& named_targets) {
+      q.sources = named_sources.places;
+      q.targets = named_targets.places;
+      std::vector<double> t;
+      std::vector<dggvtp::Moved_point> moved;
+      {
+        py::gil_scoped_release unlocked;
+        t = s.solver->target_distances(q, moved);
+      }
+      const Named_places* ranges[3] = {&named_sources, &named_targets, nullptr};
+      warn_moved(moved, ranges);
+      warn_unreachable(dggvtp::count_infinite(t), t.size(), "targets", q.max_distance);
+      return py::array_t<double>(py::ssize_t(t.size()), t.data());
+    },
+    doc::target_distances);
+  def_targets_query(
+    solver, "shortest_paths",
+    [](const Geodesic_solver& s, Query& q, const Named_places& sources, const Named_places& targets) {
+      return s.paths(q, sources, targets);
+    },
+    doc::shortest_paths);
+  solver.def(
+    "shortest_path",
+    [](const Geodesic_solver& s, const Vertices& sources, const Points& points, const Face_points& face_points,
+       const Vertices& target, const Points& target_point, const Face_points& target_face_point, double epsilon,
+       double max_distance, long threads) {
+      Query q = s.query(epsilon, max_distance, threads);
+      const Named_places t =
+        s.places(target, target_point, target_face_point, {"target", "target_point", "target_face_point", "target"});
+      if(t.places.size() != 1)
+        bad("give one target: target (a vertex), target_point (3 coordinates) or target_face_point ((face, "
+            "barycentric))");
+      return s.paths(q, s.sources(sources, points, face_points), t).first.front();
+    },
+    "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
+    "target"_a = py::none(), "target_point"_a = py::none(), "target_face_point"_a = py::none(), "epsilon"_a = 0.,
+    "max_distance"_a = infinity, "threads"_a = 1, doc::shortest_path)
     .def("__repr__", [](const Geodesic_solver& s) {
       return "<dggvtp.GeodesicSolver: " + std::to_string(s.vertices()) + " vertices, " +
              std::to_string(s.solver->number_of_triangles()) + " faces, " + s.precision + ">";

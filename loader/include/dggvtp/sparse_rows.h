@@ -34,8 +34,13 @@ struct Sparse_row
 template <class FT>
 void sparse_row(const std::vector<FT>& d, Sparse_row& row)
 {
+  // the exact size: rows are kept by the thousand, so their slack would add up to their size
+  const std::size_t size =
+    std::size_t(std::count_if(d.begin(), d.end(), [](const FT& x) { return !std::isinf(x); }));
   row.columns.clear();
   row.values.clear();
+  row.columns.reserve(size);
+  row.values.reserve(size);
   for(std::size_t i = 0; i < d.size(); ++i)
     if(!std::isinf(d[i]))
     {
@@ -68,6 +73,8 @@ void sparse_row(const Loaded_soup& soup, const std::vector<FT>& d,
             entries.emplace_back(std::uint32_t(lost), double(d[i]));
     }
   std::sort(entries.begin(), entries.end()); // by vertex, then distance: the smallest first
+  row.columns.reserve(entries.size());
+  row.values.reserve(entries.size());
   for(const auto& [v, value] : entries)
     if(row.columns.empty() || row.columns.back() != v)
     {
