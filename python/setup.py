@@ -1,5 +1,7 @@
 """Builds the package dggvtp: the extension module dggvtp._dggvtp with the project's CMake (target
-dggvtp_python) for the interpreter that runs pip, and dggvtp/'s Python files, stubs and py.typed.
+dggvtp_python) for the interpreter that runs pip, and src/dggvtp/'s Python files, stubs and py.typed
+(under src/, so that a script or a shell in python/ does not import this folder, which has no
+compiled module, in place of the package).
 
 CMake, not pybind11's setup helpers: Debian's pybind11-dev ships the headers and the CMake
 package only (its Python package, python3-pybind11, is another one), and the module needs what
@@ -65,7 +67,7 @@ setup(
     python_requires=">=3.8",
     install_requires=["numpy", "scipy"],
     packages=["dggvtp"],
-    package_dir={"dggvtp": os.path.relpath(HERE / "dggvtp")},  # from the directory pip runs this in
+    package_dir={"dggvtp": os.path.relpath(HERE / "src" / "dggvtp")},  # from the directory pip runs this in
     package_data={"dggvtp": ["py.typed", "*.pyi"]},
     include_package_data=False,
     ext_modules=[CMake_extension("dggvtp._dggvtp")],

@@ -6,15 +6,16 @@ against each other; and the dense paths (distances_from_each) for comparison. Pr
 
 usage: PYTHONPATH=build/python /usr/bin/python3 benchmark/DGG_VTP_3/local_matrix.py
            [--batch build/bin/dggvtp-batch] [--mesh FILE | --icosphere LEVEL] [--neighbours 100]
-           [--threads 2] [--check all|K] [--dense-rows 400] [--full-rows 8]
+           [--threads 2] [--check all|K] [--dense-rows 400] [--full-rows 8] [--fixed-cost K]
 Each measurement runs in a process of its own (peak RSS: ru_maxrss of that process); the mesh is
-generated (level 7: 163,842 vertices, unit sphere) into a temporary directory, never stored."""
+generated (level 7: 163,842 vertices, unit sphere) into a temporary directory, never stored.
+--fixed-cost K measures only what a row costs whatever its radius: K rows (spread over the mesh) at
+max_distance 0 and at D, alternated 3 times in one process, one thread."""
 import argparse
 import json
 import math
 import os
 import pathlib
-import resource
 import statistics
 import subprocess
 import sys
@@ -57,7 +58,12 @@ def write_ply(path, V, F):
 
 
 def peak_mb():
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    """this process's peak RSS: VmHWM, of its own memory; not ru_maxrss, which Linux carries over
+    from the parent through fork and exec (a child of a large process would report that one)"""
+    for line in open("/proc/self/status"):
+        if line.startswith("VmHWM:"):
+            return int(line.split()[1]) / 1024
+    raise RuntimeError("no VmHWM in /proc/self/status")
 
 
 def child(args):
@@ -68,7 +74,18 @@ def child(args):
     solver = dggvtp.GeodesicSolver(V, F)
     out = {"prepared_mb": peak_mb()}
     t0 = time.perf_counter()
-    if args.child == "sparse":
+    if args.child == "fixed":
+        rows = np.arange(args.rows) * (len(V) // args.rows)
+        times = {0.0: [], args.max_distance: []}
+        for _ in range(3):
+            for D in times:
+                t0 = time.perf_counter()
+                solver.local_distance_matrix(D, rows)
+                times[D].append(time.perf_counter() - t0)
+        out["rows"] = len(rows)
+        out["ms_per_row_at_0"] = statistics.median(times[0.0]) / len(rows) * 1e3
+        out["ms_per_row_at_D"] = statistics.median(times[args.max_distance]) / len(rows) * 1e3
+    elif args.child == "sparse":
         M = solver.local_distance_matrix(args.max_distance, threads=args.threads)
         out["seconds"] = time.perf_counter() - t0
         out["nnz"] = int(M.nnz)
@@ -125,6 +142,7 @@ def main():
     parser.add_argument("--check", default="all")
     parser.add_argument("--dense-rows", type=int, default=400)
     parser.add_argument("--full-rows", type=int, default=8)
+    parser.add_argument("--fixed-cost", type=int)
     parser.add_argument("--child")
     parser.add_argument("--max-distance", type=float)
     parser.add_argument("--save")
@@ -135,6 +153,8 @@ def main():
 
     import dggvtp
     import scipy.sparse
+    if args.fixed_cost:
+        args.threads = 1
     with tempfile.TemporaryDirectory() as tmp:
         tmp = pathlib.Path(tmp)
         if not args.mesh:
@@ -148,6 +168,13 @@ def main():
         print(f"{pathlib.Path(args.mesh).name}: {n} vertices, {len(F)} faces; max_distance {args.max_distance:.6g} "
               f"(about {args.neighbours:g} neighbours); {args.threads} threads; load average before {load[0]:.2f}",
               flush=True)
+        if args.fixed_cost:
+            fixed = measure(args, "fixed", rows=args.fixed_cost)
+            load_after = os.getloadavg()
+            print(f"{fixed['rows']} rows, one thread, median of 3: {fixed['ms_per_row_at_0']:.2f} ms a row at "
+                  f"max_distance 0, {fixed['ms_per_row_at_D']:.2f} ms at {args.max_distance:.6g}; load average after "
+                  f"{load_after[0]:.2f}")
+            return
 
         sparse = measure(args, "sparse", save=tmp / "python.npz")
         M = scipy.sparse.load_npz(tmp / "python.npz")
@@ -155,9 +182,10 @@ def main():
 
         stats = tmp / "stats.json"
         t0 = time.perf_counter()
-        subprocess.run([args.batch, args.mesh, "--sources", "all", "--max-distance", repr(args.max_distance),
-                        "--output", tmp / "batch.npz", "--threads", str(args.threads), "--stats", stats, "--quiet"],
-                       check=True)
+        # through a shell that forks it: its --stats peak (ru_maxrss) is then its own, not this process's
+        subprocess.run(["sh", "-c", '"$@"; exit $?', "sh", args.batch, args.mesh, "--sources", "all", "--max-distance",
+                        repr(args.max_distance), "--output", tmp / "batch.npz", "--threads", str(args.threads),
+                        "--stats", stats, "--quiet"], check=True)
         batch_seconds = time.perf_counter() - t0
         batch = json.loads(stats.read_text())
         B = scipy.sparse.load_npz(tmp / "batch.npz")

@@ -3,9 +3,10 @@
 //
 // Author(s): DGG-VTP for CGAL team
 
-// Sources, targets and path targets given as vertices of a mesh file or as 3D points, in the
-// numbering of a soup solver made by make_solver(), and the results back per file vertex: shared
-// by dggvtp and the Python module.
+// Sources, targets and path targets given as vertices of a mesh file, as 3D points or as points
+// on its triangles, in the numbering of a soup solver made by make_solver(), and the results back
+// per file vertex (fields, paths, the warnings about what is unreachable): shared by dggvtp,
+// dggvtp-batch and the Python module.
 
 #ifndef DGGVTP_QUERY_PLACES_H
 #define DGGVTP_QUERY_PLACES_H

@@ -13,7 +13,12 @@ help(dggvtp.GeodesicSolver) documents every argument.
 """
 from typing import Any
 
-from ._dggvtp import GeodesicSolver, InputError, __version__, read_mesh
+try:
+    from ._dggvtp import GeodesicSolver, InputError, __version__, read_mesh
+except ModuleNotFoundError as e:  # the sources, python/src/dggvtp, have no compiled module
+    raise ModuleNotFoundError(f"dggvtp imported from {__path__[0]}, without its compiled module _dggvtp: build it "
+                              "(target dggvtp_python; PYTHONPATH=build/python) or install it (README.md, "
+                              "section Python)") from e
 
 __all__ = ["GeodesicSolver", "InputError", "geodesic_distances", "read_mesh", "__version__"]
 
