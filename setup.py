@@ -1,4 +1,4 @@
-"""pip install . (the repository root) builds the Python module as pip install ./python does."""
+"""pip install . (the repository root) builds the Python package as pip install ./python does."""
 import pathlib
 import runpy
 

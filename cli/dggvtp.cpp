@@ -107,10 +107,12 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          crossed
   --stats FILE           one JSON object: sizes, times, window counts, peak memory
   --repair               repair the mesh with CGAL's Polygon_mesh_processing before the input
-                         checks: stitch_borders (coincident border edges), remove_degenerate_faces
-                         (zero length edges, zero area), remove_almost_degenerate_faces (angles
-                         within 0.1 degree of flat, edges 1e4 times shorter than their face's
-                         longest and under 1e-4 of the bounding box's diagonal) and
+                         checks, once the faces that repeat a vertex are dropped (refused
+                         without --repair): stitch_borders (coincident border edges),
+                         remove_degenerate_faces (zero length edges, zero area),
+                         remove_almost_degenerate_faces (angles within 0.1 degree of flat,
+                         edges 1e4 times shorter than their face's longest and under 1e-4 of
+                         the bounding box's diagonal) and
                          remove_isolated_vertices; one 'warning:' line per kind of repair with
                          its counts. Results stay per vertex of the file: a vertex merged with
                          another at its place takes its distance and label, a removed one is nan
@@ -148,7 +150,8 @@ of the file, the smallest over the copies of a split vertex (a source or target 
 all its copies). Vertices no face uses, and vertices of other
 connected components than the sources', are unreachable: inf. An unreadable or empty file, a
 non-finite coordinate, a mesh too large for a double (its bounding box, or a face's squared
-edge lengths or area, overflow: scale it down), a face with fewer than 3 or repeated vertices,
+edge lengths or area, overflow: scale it down), a face with fewer than 3 or repeated vertices
+(--repair drops the latter),
 a degenerate face (zero length edge or zero area), a sliver (an edge more than 1e10 times
 longer than the height on it),
 an edge shorter than 1e-3 machine epsilons times the mesh's size (2.2e-19 of it in double),
@@ -198,6 +201,7 @@ struct Options : dggvtp::Propagation_options
   // targets and paths end the propagation early
   bool stops_early() const { return !targets.empty() || !path_targets.empty(); }
   bool has_points() const { return dggvtp::has_points({&sources, &targets, &path_targets}); }
+  dggvtp::Repair_option repair_option() const { return {"--repair", repair}; }
 };
 
 
@@ -463,7 +467,10 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
   }();
   run.seconds_locate = seconds_since(t0);
   for(const auto& m : q.moved_points)
-    run.warnings.push_back(std::string(m.option) + " " + number_text(m.point[0]) + " " + number_text(m.point[1]) + " " +
+    run.warnings.push_back(std::string(m.range == dggvtp::Place_range::source   ? "--source-point"
+                                       : m.range == dggvtp::Place_range::target ? "--target-point"
+                                                                                : "--path-to-point") +
+                           " " + number_text(m.point[0]) + " " + number_text(m.point[1]) + " " +
                            number_text(m.point[2]) + " is " + number_text(m.distance) +
                            " away from the surface: taken at the nearest point of the surface");
   if(q.sources.empty()) // the library refuses a query without sources, rightly: nothing to propagate
@@ -525,18 +532,12 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
   };
   for(const auto& t : q.target_places)
     run.target_distances.push_back(target_distance(t));
-  for(const auto& t : q.path_places)
-  {
-    using Path_point = typename Tree::Path_point;
-    std::vector<Path_point> path;
-    if(t.vertices.empty())
-      tree->shortest_path_to_target(t.point, std::back_inserter(path));
-    else
-      tree->shortest_path(dggvtp::nearest_copy(t.vertices, d), std::back_inserter(path));
-    auto [line, length] = dggvtp::polyline_of(path, points, triangles);
-    run.path_lengths.push_back(length);
-    run.paths.push_back(std::move(line));
-  }
+  if(tree)
+    for(auto& [line, length] : dggvtp::trace_paths(*tree, q, d, points, triangles))
+    {
+      run.path_lengths.push_back(length);
+      run.paths.push_back(std::move(line));
+    }
 
   if(!options.stops_early())
   {
@@ -634,7 +635,7 @@ void write_output(const Run& run, const Options& options)
   const std::string format = dggvtp::output_format_of(options.output, options.output_format);
   if(format != "ply" && format != "vtk")
     return write_distances(run.distances, options.output, format);
-  const dggvtp::File_mesh mesh = dggvtp::read_file_mesh(options.mesh);
+  const dggvtp::File_mesh mesh = dggvtp::read_file_mesh(options.mesh, options.repair_option());
   Output_file file(options.output);
   (format == "ply" ? dggvtp::write_ply_field : dggvtp::write_vtk_field)(
     file.get(), options.mesh, mesh, run.distances, options.labels.empty() ? nullptr : &run.labels);
@@ -691,20 +692,10 @@ std::string unreachable_warning(const Run& run, const Options& options, std::siz
 {
   if(std::isfinite(options.max_distance))
     return std::string();
-  const auto infinite = [](const std::vector<double>& values) {
-    return std::size_t(std::count_if(values.begin(), values.end(), [](double d) { return std::isinf(d); }));
-  };
-  const std::string why = " from the sources (inf): in other connected components than the sources', or used by no face";
   if(options.stops_early())
-  {
-    const std::size_t n = infinite(run.target_distances) + infinite(run.path_lengths);
-    const std::size_t asked = run.target_distances.size() + run.path_lengths.size();
-    return n == 0 ? std::string()
-                  : std::to_string(n) + " of " + std::to_string(asked) + " targets and paths are unreachable" + why;
-  }
-  const std::size_t n = infinite(run.distances);
-  return n == 0 ? std::string()
-                : std::to_string(n) + " of " + std::to_string(file_vertices) + " vertices are unreachable" + why;
+    return dggvtp::unreachable_warning(dggvtp::count_infinite(run.target_distances) + dggvtp::count_infinite(run.path_lengths),
+                                       run.target_distances.size() + run.path_lengths.size(), "targets and paths");
+  return dggvtp::unreachable_warning(dggvtp::count_infinite(run.distances), file_vertices, "vertices");
 }
 
 int run_main(int argc, char** argv)
@@ -727,7 +718,8 @@ int run_main(int argc, char** argv)
       dggvtp::check_writable(std::string(option) + " '" + *path + "'", *path);
 
   const Clock::time_point t0 = Clock::now();
-  dggvtp::Loaded_soup soup = dggvtp::load_soup(options.mesh);
+  const dggvtp::Repair_option repair = options.repair_option();
+  dggvtp::Loaded_soup soup = dggvtp::load_soup(options.mesh, repair);
   for(const auto& [places, what] : {std::make_pair(&options.sources, "source"), std::make_pair(&options.targets, "target"),
                                     std::make_pair(&options.path_targets, "path target")})
     for(const Place& p : *places)
@@ -737,7 +729,7 @@ int run_main(int argc, char** argv)
   dggvtp::Repair_record repaired;
   if(options.repair)
   {
-    repaired = dggvtp::repair_soup(soup);
+    repaired = dggvtp::repair_soup(soup, repair);
     for(auto [places, what] : {std::make_pair(&options.sources, "source"), std::make_pair(&options.targets, "target"),
                                std::make_pair(&options.path_targets, "path target")})
       for(Place& p : *places)
@@ -754,19 +746,13 @@ int run_main(int argc, char** argv)
   }
   catch(const std::invalid_argument& e) // the library's documented preconditions
   {
-    // the faces that CGAL's repairs may fix: the library's messages for them
-    const std::string what = e.what();
-    const bool repairable = what.find(" is degenerate") != std::string::npos ||
-                            what.find(" is a sliver") != std::string::npos ||
-                            what.find(" has an edge of length") != std::string::npos;
-    throw dggvtp::Input_error(what + (!repairable ? "" : options.repair ? " (after --repair)"
-                                                                        : "; --repair removes such faces"));
+    throw dggvtp::Input_error(dggvtp::with_repair_hint(e.what(), repair));
   }
-  repaired.apply(run.distances, run.labels);
+  repaired.apply(run.distances.empty() ? nullptr : run.distances.data(), run.labels.empty() ? nullptr : run.labels.data());
   const double seconds_load = seconds_read + run.seconds_make_mesh;
   if(!options.quiet)
-    for(const std::string& repair : soup.repairs)
-      std::cerr << "warning: " << options.mesh << ": " << repair << "\n";
+    for(const std::string& line : soup.repairs)
+      std::cerr << "warning: " << options.mesh << ": " << line << "\n";
   if(!options.quiet)
     for(const std::string& warning : run.warnings)
       std::cerr << "warning: " << warning << "\n";
@@ -790,7 +776,7 @@ int run_main(int argc, char** argv)
   if(!options.isolines_output.empty())
   {
     Output_file file(options.isolines_output);
-    dggvtp::write_isolines_obj(file.get(), options.mesh, options.repair, run.distances,
+    dggvtp::write_isolines_obj(file.get(), options.mesh, repair, run.distances,
                                options.isolines > 0 ? dggvtp::evenly_spaced_values(run.distances, options.isolines)
                                                     : options.isolines_at);
     file.commit();

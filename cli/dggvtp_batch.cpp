@@ -28,7 +28,10 @@
 #include <dggvtp/command_line.h>
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/npy.h>
+#include <dggvtp/npz.h>
 #include <dggvtp/output_paths.h>
+#include <dggvtp/query_places.h>
+#include <dggvtp/sparse_rows.h>
 #include <dggvtp/arguments.h>
 #include <dggvtp/single_value_options.h>
 #include <dggvtp/version.h>
@@ -96,6 +99,14 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
   --output OUT.npy       the .npy file (C order, shape (sources, vertices)); it appears only
                          when every row is in it
   --dtype D              float64 (default) or float32: the element type of the .npy
+  --max-distance D       a local distance matrix: only the distances up to D >= 0 (finite), into
+                         --output OUT.npz, a sparse matrix (CSR) as scipy.sparse.save_npz writes
+                         it (scipy.sparse.load_npz reads it): row k holds the vertices within D of
+                         source k and their distances, the source itself as an explicit 0, the
+                         values `dggvtp --source N --max-distance D` prints (not inf); the memory
+                         is in proportion to them. The rows are held in memory and written at the
+                         end, by one process: no --checkpoint (a killed run starts over), no fps:K,
+                         no mpirun with more than one process
   --exact                exact distances (VTP algorithm); the default
   --epsilon E            DGG-VTP with accuracy E in [0, 1] (E = 0 is --exact)
   --precision P          double (default) or float: the number type of the computation
@@ -157,11 +168,15 @@ struct Options : dggvtp::Propagation_options
   std::string sources_output;   // optional
   std::string stats;            // optional
   Npy_dtype dtype = Npy_dtype::float64;
+  double max_distance = std::numeric_limits<double>::infinity(); // finite: a local distance matrix
   long threads = 1;             // per process, 0 = all cores
   bool progress = false;        // forced on by --progress
   bool quiet = false;
   bool help = false;
   bool version = false; // with help: print the version instead of the usage
+
+  // --max-distance: the rows are sparse, in memory, and no checkpoint is made
+  bool local_matrix() const { return std::isfinite(max_distance); }
 
   // Messages name the checkpoint as the user knows it: the path given, or the output it is made
   // from (errors about the files inside it end with this)
@@ -176,7 +191,7 @@ Options parse_options(int argc, char** argv)
 {
   Options options;
   dggvtp::Single_value_options single_value{"--sources", "--output", "--checkpoint", "--sources-output", "--stats",
-                                            "--dtype", "--epsilon", "--precision", "--threads"};
+                                            "--dtype", "--epsilon", "--precision", "--threads", "--max-distance"};
   dggvtp::Argument_reader words(argc, argv, {{"-h", "--help"}, {"-o", "--output"}, {"-s", "--sources"}}, usage_text);
   while(words.next())
   {
@@ -219,6 +234,13 @@ Options parse_options(int argc, char** argv)
       else
         throw Usage_error("--dtype must be float64 or float32");
     }
+    else if(arg == "--max-distance")
+    {
+      options.max_distance = parse_number<double>(arg, value());
+      if(!(options.max_distance >= 0.) || std::isinf(options.max_distance))
+        throw Usage_error("--max-distance must be a finite number >= 0 (the local distance matrix keeps the distances "
+                          "up to it); without it, the rows hold every distance");
+    }
     else if(options.parse(arg, value))
       continue;
     else if(arg == "--threads")
@@ -248,6 +270,17 @@ Options parse_options(int argc, char** argv)
   if(options.sources.compare(0, 4, "fps:") == 0 && parse_number<std::size_t>("--sources fps:K", options.sources.substr(4)) == 0)
     throw Usage_error("fps:0 selects no source");
   options.checkpoint_given = !options.checkpoint.empty();
+  if(options.local_matrix())
+  {
+    const std::string& o = options.output;
+    if(o.size() < 4 || o.compare(o.size() - 4, 4, ".npz") != 0)
+      throw Usage_error("--max-distance writes a sparse matrix as .npz: give --output FILE.npz");
+    if(options.checkpoint_given)
+      throw Usage_error("--checkpoint does not combine with --max-distance: the rows, of sizes known only once "
+                        "computed, are held in memory and written at the end (a killed run starts over)");
+    if(options.sources.compare(0, 4, "fps:") == 0)
+      throw Usage_error("fps:K chooses each source from whole rows: it does not combine with --max-distance");
+  }
   if(!options.checkpoint_given)
     options.checkpoint = options.output + ".checkpoint";
   return options;
@@ -262,6 +295,12 @@ void check_outputs(const Options& options)
     throw Input_error("cannot write --output '" + options.output + "': it exists and is not a regular file (the " +
                       "output is renamed into place)");
   dggvtp::check_writable("--output '" + options.output + "'", options.output);
+  if(!options.sources_output.empty())
+    dggvtp::check_writable("--sources-output '" + options.sources_output + "'", options.sources_output);
+  if(!options.stats.empty())
+    dggvtp::check_writable("--stats '" + options.stats + "'", options.stats);
+  if(options.local_matrix())
+    return;
   const std::string checkpoint =
     (options.checkpoint_given ? "--checkpoint '" : "'") + options.checkpoint + "'" + options.checkpoint_origin();
   if(::stat(options.checkpoint.c_str(), &info) != 0)
@@ -270,10 +309,6 @@ void check_outputs(const Options& options)
     throw Input_error("cannot write " + checkpoint + ": it is not a directory");
   else
     dggvtp::check_writable(checkpoint, options.checkpoint + "/rows.npy");
-  if(!options.sources_output.empty())
-    dggvtp::check_writable("--sources-output '" + options.sources_output + "'", options.sources_output);
-  if(!options.stats.empty())
-    dggvtp::check_writable("--stats '" + options.stats + "'", options.stats);
 }
 
 // Runs `f`; an error about the files of the default checkpoint also names the --output it is made from.
@@ -674,7 +709,7 @@ struct Prepared
 };
 
 template <class Kernel>
-Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon)
+Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, double max_distance)
 {
   using Solver = CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Kernel>;
   Prepared prepared;
@@ -691,27 +726,21 @@ Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon)
   prepared.seconds_prepare = seconds_since(t0) - prepared.seconds_make_mesh;
   prepared.faces = soup->triangles.size();
   dggvtp::release_soup(*soup); // keeps file_vertex_of
-  prepared.row = [soup, solver, epsilon](std::size_t file_vertex, bool parallel) {
+  const auto np = CGAL::DGG_VTP_3::parameters::max_distance(max_distance).accuracy(epsilon);
+  prepared.row = [soup, solver, np](std::size_t file_vertex, bool parallel) {
     std::vector<typename Solver::FT> d((*solver)->number_of_vertices());
     const auto sources = dggvtp::solver_vertices_of(*soup, file_vertex);
     if(parallel)
       (*solver)->template compute_distances_to_nearest_source<CGAL::Parallel_if_available_tag>(
-        sources, CGAL::make_property_map(d), CGAL::parameters::accuracy(epsilon));
+        sources, CGAL::make_property_map(d), np);
     else
       (*solver)->template compute_distances_to_nearest_source<CGAL::Sequential_tag>(
-        sources, CGAL::make_property_map(d), CGAL::parameters::accuracy(epsilon));
+        sources, CGAL::make_property_map(d), np);
     return dggvtp::file_vertex_distances(*soup, d);
   };
-  prepared.rows = [soup, solver, epsilon](const std::vector<std::size_t>& file_vertices, long threads,
+  prepared.rows = [soup, solver, np](const std::vector<std::size_t>& file_vertices, long threads,
                                           const std::function<void(std::size_t, const std::vector<double>&)>& done) {
-    // the copies of each file vertex, in one pass over the solver's vertices
-    std::vector<std::size_t> row_of(soup->file_vertices, file_vertices.size());
-    for(std::size_t k = 0; k < file_vertices.size(); ++k)
-      row_of[file_vertices[k]] = k;
-    std::vector<std::vector<std::size_t>> sets(file_vertices.size());
-    for(std::size_t i = 0; i < soup->file_vertex_of.size(); ++i)
-      if(row_of[soup->file_vertex_of[i]] < file_vertices.size())
-        sets[row_of[soup->file_vertex_of[i]]].push_back(i);
+    const std::vector<std::vector<std::size_t>> sets = dggvtp::solver_vertex_sets(*soup, file_vertices);
     const auto row = [&](std::size_t k, const std::vector<typename Solver::FT>& d,
                          const CGAL::DGG_VTP_3::Propagation_statistics&) {
       done(k, dggvtp::file_vertex_distances(*soup, d));
@@ -722,15 +751,13 @@ Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon)
       std::optional<tbb::global_control> limit;
       if(threads > 0)
         limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-      (*solver)->template compute_distances_from_each_source_set<CGAL::Parallel_tag>(
-        sets, row, CGAL::parameters::accuracy(epsilon));
+      (*solver)->template compute_distances_from_each_source_set<CGAL::Parallel_tag>(sets, row, np);
       return;
     }
 #else
     (void)threads;
 #endif
-    (*solver)->template compute_distances_from_each_source_set<CGAL::Sequential_tag>(
-      sets, row, CGAL::parameters::accuracy(epsilon));
+    (*solver)->template compute_distances_from_each_source_set<CGAL::Sequential_tag>(sets, row, np);
   };
   return prepared;
 }
@@ -954,24 +981,6 @@ int collectively(const dggvtp::Communicator& comm, const std::function<void()>& 
   return comm.max(status);
 }
 
-// The rows that leave vertices unreachable (inf), counted as they are computed, for one warning.
-struct Unreachable_count
-{
-  std::atomic<std::size_t> rows{0}; // rows with an inf
-  std::atomic<std::size_t> most{0}; // the most infs in one row
-
-  void add(const std::vector<double>& row)
-  {
-    const std::size_t n = std::size_t(std::count_if(row.begin(), row.end(), [](double d) { return std::isinf(d); }));
-    if(n == 0)
-      return;
-    ++rows;
-    for(std::size_t m = most.load(); m < n && !most.compare_exchange_weak(m, n);)
-    {
-    }
-  }
-};
-
 struct Phase_one
 {
   Options options;
@@ -995,6 +1004,9 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     options = parse_options(argc, argv);
     if(options.help)
       return;
+    if(options.local_matrix() && comm.size() > 1)
+      throw Usage_error("--max-distance runs in one process (its rows are gathered in memory): run it without mpirun, "
+                        "with --threads");
     check_outputs(options);
     const Clock::time_point t0 = Clock::now();
     one.soup = std::make_shared<dggvtp::Loaded_soup>(dggvtp::load_soup(options.mesh));
@@ -1003,8 +1015,9 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     dggvtp::npy_file_size(options.dtype, one.sources.rows, one.file_vertices); // too large: error now
     const double seconds_read = seconds_since(t0);
     one.prepared = options.precision == "float"
-                     ? prepare<CGAL::Simple_cartesian<float>>(one.soup, options.epsilon)
-                     : prepare<CGAL::Exact_predicates_inexact_constructions_kernel>(one.soup, options.epsilon);
+                     ? prepare<CGAL::Simple_cartesian<float>>(one.soup, options.epsilon, options.max_distance)
+                     : prepare<CGAL::Exact_predicates_inexact_constructions_kernel>(one.soup, options.epsilon,
+                                                                                    options.max_distance);
     one.repairs = one.soup->repairs;
     one.seconds_load = seconds_read + one.prepared.seconds_make_mesh;
   });
@@ -1041,8 +1054,9 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
 
   // 2. rank 0 opens the checkpoint; the others learn the done rows
   Resume resume;
+  resume.done.assign(sources.rows, 0);
   status = collectively(comm, [&] {
-    if(!root)
+    if(!root || options.local_matrix())
       return;
     const std::string fingerprint = fingerprint_of(options, sources, one.file_vertices);
     check_room_for_output(options, checkpoint, sources.rows, one.file_vertices, file_size);
@@ -1055,6 +1069,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   if(root && !options.quiet)
     for(const std::string& note : resume.notes)
       std::cerr << "warning: " << note << "\n";
+  if(!options.local_matrix())
   {
     std::string done(resume.done.begin(), resume.done.end());
     comm.broadcast(done);
@@ -1072,12 +1087,26 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     return status;
   const Clock::time_point t_compute = Clock::now();
   std::size_t computed = 0; // by this rank
-  Unreachable_count unreachable; // of this rank's rows
+  dggvtp::Unreachable_rows unreachable; // of this rank's rows
+  std::vector<dggvtp::Sparse_row> local_rows; // --max-distance
   double seconds_own = 0.;  // this rank's rows, without waiting for the others
   try
   {
-    std::atomic<std::size_t> durable(already_done); // fps: rows done, for the progress line
-    if(sources.farthest_point)
+    std::atomic<std::size_t> durable(already_done); // fps and --max-distance: rows done, for the progress line
+    if(options.local_matrix()) // one process (checked above), no checkpoint
+    {
+      local_rows.resize(sources.rows);
+      std::optional<Progress> progress;
+      if(show_progress)
+        progress.emplace([&] { return durable.load(); }, sources.rows, 0);
+      one.prepared.rows(sources.vertices, threads, [&](std::size_t i, const std::vector<double>& row) {
+        dggvtp::sparse_row(row, local_rows[i]);
+        ++durable;
+      });
+      computed = sources.rows;
+      seconds_own = seconds_since(t_compute);
+    }
+    else if(sources.farthest_point)
     {
       if(root)
       {
@@ -1115,7 +1144,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
 #endif
             row = one.prepared.row(v, threads != 1);
           }
-          unreachable.add(row);
+          unreachable.add(row.begin(), row.end());
           chosen[v] = 1;
           state.chosen.push_back(v);
           for(std::size_t i = 0; i < row.size(); ++i)
@@ -1166,7 +1195,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
         file_vertices.push_back(sources.vertices[r]);
       one.prepared.rows(file_vertices, threads, [&](std::size_t i, const std::vector<double>& row) {
         thread_local std::vector<char> bytes;
-        unreachable.add(row);
+        unreachable.add(row.begin(), row.end());
         encode_row(row, options.dtype, bytes);
         sink.write(mine[i], bytes);
       });
@@ -1200,7 +1229,11 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   status = collectively(comm, [&] {
     if(!root)
       return;
-    if(!sources.farthest_point)
+    if(options.local_matrix())
+      dggvtp::write_file_atomically(options.output, [&](const dggvtp::Npz_writer::Sink& write) {
+        dggvtp::write_csr_npz(local_rows, one.file_vertices, options.dtype, write);
+      });
+    else if(!sources.farthest_point)
       in_checkpoint(options, [&] {
         std::vector<unsigned char> done(sources.rows, 0);
         dggvtp::read_records(checkpoint.directory, done);
@@ -1209,7 +1242,8 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
             throw Input_error("row " + std::to_string(r) + " is not recorded as done after the run (the checkpoint '" +
                               checkpoint.directory + "' was changed meanwhile?)");
       });
-    finish_checkpoint(checkpoint, options.output);
+    if(!options.local_matrix())
+      finish_checkpoint(checkpoint, options.output);
     if(!options.sources_output.empty())
     {
       std::string text;
@@ -1227,10 +1261,11 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   // even with --quiet: a scan in pieces or a stray vertex is worth knowing before using the rows
   const double rows_unreachable = std::accumulate(unreachable_rows.begin(), unreachable_rows.end(), 0.);
   if(rows_unreachable > 0.)
-    std::cerr << "warning: " << std::size_t(rows_unreachable) << " of the " << computed_total
-              << " rows computed leave vertices unreachable (inf), up to "
-              << std::size_t(*std::max_element(unreachable_most.begin(), unreachable_most.end())) << " of " << one.file_vertices
-              << " in a row: in other connected components than the row's source, or used by no face\n";
+    std::cerr << "warning: "
+              << dggvtp::unreachable_rows_warning(std::size_t(rows_unreachable), computed_total,
+                                                  std::size_t(*std::max_element(unreachable_most.begin(), unreachable_most.end())),
+                                                  one.file_vertices)
+              << "\n";
   const double seconds_total = seconds_since(t_start);
   const auto json_list = [](const std::vector<double>& values, const char* format) {
     std::string out;

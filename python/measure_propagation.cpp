@@ -6,7 +6,7 @@
 // The library's own time for the Python call solver.distances(0, epsilon=1e-4) (see measure.py):
 // thread CPU and wall seconds of compute_distances_to_nearest_source (Sequential_tag, as the module
 // runs threads=1) on a soup solver built as dggvtp and the module build it. Not built by CMake:
-//   g++ -O3 -DNDEBUG -frounding-math -std=gnu++17 -Iinclude -Icli/include python/measure_propagation.cpp \
+//   g++ -O3 -DNDEBUG -frounding-math -std=gnu++17 -Iinclude -Iloader/include python/measure_propagation.cpp \
 //       -o measure_propagation -lgmpxx -lmpfr -lgmp
 //   ./measure_propagation MESH [RUNS]
 

@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs, if any is missing (as root, or through sudo).
 # usage: scripts/install_dependencies.sh [--benchmark]   (--benchmark adds python3; the Python module's
-# packages, matplotlib among them, are in the default list: the test command builds and tests it;
-# python3-scipy: the adversary's tests generate their meshes with it)
+# packages, matplotlib among them, are in the default list: the test command builds and tests it)
 set -euo pipefail
+# python3-scipy: local_distance_matrix's result, and the meshes of the adversary's tests;
+# python3-venv, python3-pip: the README's install (the test python_pip_install); python3-mypy: the
+# check of the stubs; ccache: that test compiles the module again, which ccache makes seconds
+# after the first run
 packages=(g++ cmake make libcgal-dev libgmp-dev libmpfr-dev libboost-dev libboost-graph-dev
           libboost-test-dev libeigen3-dev libtbb-dev libfast-float-dev libopenmpi-dev openmpi-bin
-          pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib
-          python3-setuptools doxygen)
+          pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib python3-setuptools
+          python3-venv python3-pip python3-mypy ccache git doxygen)
 if [ "${1:-}" = "--benchmark" ]; then
   packages+=(python3 python3-matplotlib)
 fi

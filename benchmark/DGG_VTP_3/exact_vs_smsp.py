@@ -112,15 +112,15 @@ def fmt(seconds):
 
 
 def revision():
-    """The repository's commit, and whether the library or the CLI had uncommitted changes."""
+    """The repository's commit, and whether the library, the loader or the CLI had uncommitted changes."""
     try:
         head = subprocess.run(['git', '-C', REPO, 'rev-parse', '--short', 'HEAD'], capture_output=True,
                               text=True, timeout=30).stdout.strip()
-        dirty = subprocess.run(['git', '-C', REPO, 'status', '--porcelain', '--', 'include', 'cli'],
+        dirty = subprocess.run(['git', '-C', REPO, 'status', '--porcelain', '--', 'include', 'loader', 'cli'],
                                capture_output=True, text=True, timeout=30).stdout.strip()
     except (OSError, subprocess.SubprocessError):
         return 'unknown commit'
-    return f'commit {head or "?"}' + (' + uncommitted changes in include/ or cli/' if dirty else '')
+    return f'commit {head or "?"}' + (' + uncommitted changes in include/, loader/ or cli/' if dirty else '')
 
 
 def machine():

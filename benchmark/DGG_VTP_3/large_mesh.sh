@@ -51,7 +51,7 @@ PY
 done
 
 rev="commit $(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo '?')"
-[ -z "$(git -C "$repo" status --porcelain -- include cli 2>/dev/null)" ] || rev="$rev + uncommitted changes in include/ or cli/"
+[ -z "$(git -C "$repo" status --porcelain -- include loader cli 2>/dev/null)" ] || rev="$rev + uncommitted changes in include/, loader/ or cli/"
 python3 - "$target" "${options[*]}" "$rev" "$stats_dir"/run*.json <<'PY'
 import datetime, json, os, statistics, sys
 target, options, rev, files = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]

@@ -3,7 +3,7 @@ front (an orthographic projection onto the x-y plane, the triangles that face th
 by the distance, with isolines. Writes a PNG.
 
 usage: python3 distance_field.py [MESH] [OUTPUT.png]   (default: data/meshes/bunny.ply, distance_field.png)
-Needs the module (PYTHONPATH=build/python, or pip install ./python) and python3-matplotlib."""
+Needs the package (PYTHONPATH=build/python, or installed as the README says) and python3-matplotlib."""
 import pathlib
 import sys
 

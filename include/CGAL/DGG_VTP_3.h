@@ -24,5 +24,6 @@
 #include <CGAL/DGG_VTP_3/Triangle_soup_geodesic_distance_solver.h>
 #include <CGAL/DGG_VTP_3/compute_geodesic_distances.h>
 #include <CGAL/DGG_VTP_3/isolines.h>
+#include <CGAL/DGG_VTP_3/version.h>
 
 #endif // CGAL_DGG_VTP_3_H

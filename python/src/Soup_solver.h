@@ -4,16 +4,18 @@
 // Author(s): DGG-VTP for CGAL team
 
 // The solver behind dggvtp.GeodesicSolver, without Python: a Triangle_soup_geodesic_distance_solver
-// built from a soup as dggvtp builds it (dggvtp::make_solver: the same repairs, the same bits),
-// answering queries in the numbering of the caller's vertices. The Python layer converts the
-// arguments, allocates the result arrays and releases the GIL around these calls; every query is
-// const and may run in several threads at once.
+// built from a soup as dggvtp builds it (dggvtp::make_solver, and with repair on the repairs of
+// dggvtp --repair: the same bits), answering queries in the numbering of the caller's vertices and
+// faces. The Python layer converts the arguments, allocates the result arrays and releases the GIL
+// around these calls; every query is const and may run in several threads at once.
 
 #ifndef DGGVTP_PYTHON_SOUP_SOLVER_H
 #define DGGVTP_PYTHON_SOUP_SOLVER_H
 
 #include <dggvtp/load_mesh.h>
 #include <dggvtp/query_places.h>
+#include <dggvtp/repair.h>
+#include <dggvtp/sparse_rows.h>
 
 #include <CGAL/DGG_VTP_3.h>
 #include <CGAL/Simple_cartesian.h>
@@ -22,47 +24,62 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <boost/range/irange.hpp>
+
 #include <algorithm>
+#include <array>
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <iterator>
 #include <limits>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace dggvtp {
 namespace python {
 
-// What a query asks, in the caller's (the file's) vertex numbering
+// What a query asks, in the caller's numbering: vertices of V, faces of F
 struct Query
 {
   std::vector<Place> sources;      // their order numbers the labels
   std::vector<Place> targets;      // target_distances()
-  std::vector<Place> path_targets; // shortest_path(): one
+  std::vector<Place> path_targets; // shortest_paths()
   double epsilon = 0.;             // accuracy; 0 = exact
   double max_distance = std::numeric_limits<double>::infinity();
   long threads = 1;                // 0 = all cores; 1 = sequential
-
-  bool has_points() const { return dggvtp::has_points({&sources, &targets, &path_targets}); }
 };
 
-// The queries of GeodesicSolver, whatever the precision
+using Paths = std::vector<std::pair<Polyline, double>>; // from each target to its source, and its length
+
+// The queries of GeodesicSolver, whatever the precision. Each adds to `moved` the points it took
+// at the surface far from where they were given, for a warning.
 class Solver_interface
 {
 public:
   virtual ~Solver_interface() = default;
-  virtual std::size_t number_of_vertices() const = 0; // of the caller's mesh
-  virtual std::size_t number_of_faces() const = 0;    // triangles of the solver (after repairs)
+  virtual std::size_t number_of_vertices() const = 0; // of V
+  virtual std::size_t number_of_faces() const = 0;    // of F
+  virtual std::size_t number_of_triangles() const = 0; // of the solver (after the input policy's repairs)
   virtual const std::vector<std::string>& repairs() const = 0;
   // per vertex, into `distances` (and `labels` unless null)
-  virtual void distances(const Query& query, double* distances, long long* labels) const = 0;
+  virtual void distances(const Query& query, double* distances, long long* labels,
+                         std::vector<Moved_point>& moved) const = 0;
   // per source vertex of `query` (no points), a row of number_of_vertices() into `rows`
   virtual void distances_from_each(const Query& query, double* rows) const = 0;
-  virtual std::vector<double> target_distances(const Query& query) const = 0;
-  virtual Polyline shortest_path(const Query& query) const = 0;
+  // per source vertex of `query` (every vertex if it has none), the vertices within its maximum
+  // distance; each row is handed to `row(k, row)` from any thread
+  virtual void local_distance_matrix(const Query& query,
+                                     const std::function<void(std::size_t, Sparse_row&&)>& row) const = 0;
+  virtual std::vector<double> target_distances(const Query& query, std::vector<Moved_point>& moved) const = 0;
+  virtual Paths shortest_paths(const Query& query, std::vector<Moved_point>& moved) const = 0;
 };
 
 // Runs `f` with the concurrency tag and the TBB thread limit of `threads` (1: sequential). TBB's
@@ -89,23 +106,38 @@ class Soup_solver final : public Solver_interface
   using Solver = CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Kernel>;
   using FT = typename Solver::FT;
   using Location = typename Solver::Face_location;
+  using Face = std::array<std::uint32_t, 3>;
 
 public:
-  // throws Input_error or std::invalid_argument for a soup the input policy refuses
-  explicit Soup_solver(Loaded_soup&& soup) : m_soup(std::move(soup))
+  // `faces`: F, in its corner order (the soup's triangles may have lost some); throws Input_error
+  // for a soup the input policy refuses
+  Soup_solver(Loaded_soup&& soup, std::vector<Face>&& faces, const Repair_option& repair)
+    : m_soup(std::move(soup)), m_faces(std::move(faces))
   {
-    make_solver(m_soup, m_solver);
-    // no repair appended a copy of a vertex: the solver's vertices are the caller's
+    if(repair.on)
+      m_record = repair_soup(m_soup, repair);
+    try
+    {
+      make_solver(m_soup, m_solver);
+    }
+    catch(const std::invalid_argument& e) // the library's documented preconditions
+    {
+      throw Input_error(with_repair_hint(e.what(), repair));
+    }
     m_same_vertices = m_soup.points.size() == m_soup.file_vertices;
+    m_merged = m_record.merged_into();
+    index_faces();
   }
 
   std::size_t number_of_vertices() const override { return m_soup.file_vertices; }
-  std::size_t number_of_faces() const override { return m_soup.triangles.size(); }
+  std::size_t number_of_faces() const override { return m_faces.size(); }
+  std::size_t number_of_triangles() const override { return m_soup.triangles.size(); }
   const std::vector<std::string>& repairs() const override { return m_soup.repairs; }
 
-  void distances(const Query& query, double* distances, long long* labels) const override
+  void distances(const Query& query, double* distances, long long* labels,
+                 std::vector<Moved_point>& moved) const override
   {
-    with_places(query, [&](const auto& q) {
+    with_places(query, moved, [&](const auto& q) {
       Field field(*this, distances);
       std::vector<std::size_t> nearest(labels ? m_solver->number_of_vertices() : 0);
       with_threads(query.threads, [&](auto tag) {
@@ -128,22 +160,51 @@ public:
   {
     const std::size_t n = number_of_vertices();
     with_threads(query.threads, [&](auto tag) {
-      CGAL::for_each<decltype(tag)>(std::vector<std::size_t>(boost::counting_iterator<std::size_t>(0),
-                                                             boost::counting_iterator<std::size_t>(query.sources.size())),
-                                    [&](std::size_t k) {
+      CGAL::for_each<decltype(tag)>(boost::irange(std::size_t(0), query.sources.size()), [&](std::size_t k) {
         Query one = query;
         one.sources.assign(1, query.sources[k]);
         one.threads = 1;
-        distances(one, rows + k * n, nullptr);
+        std::vector<Moved_point> none; // vertices only
+        distances(one, rows + k * n, nullptr, none);
         return true;
       });
     });
   }
 
-  std::vector<double> target_distances(const Query& query) const override
+  // one sequential propagation per row, the rows shared among the threads, each made sparse as it
+  // is done (dggvtp-batch --max-distance's rows); a vertex that a repair removed has an empty row
+  void local_distance_matrix(const Query& query,
+                             const std::function<void(std::size_t, Sparse_row&&)>& row) const override
+  {
+    const bool every_vertex = query.sources.empty();
+    std::vector<std::size_t> computed, file_vertices; // the rows that are not removed vertices, and their sources
+    for(std::size_t k = 0; k < (every_vertex ? number_of_vertices() : query.sources.size()); ++k)
+    {
+      const std::size_t v = every_vertex ? k : query.sources[k].vertex;
+      const auto lost = m_record.lost.find(v);
+      if(every_vertex && lost != m_record.lost.end() && lost->second == Repair_record::removed)
+        row(k, Sparse_row());
+      else
+      {
+        computed.push_back(k);
+        file_vertices.push_back(m_record.file_vertex(v, "source")); // a merged vertex: the one at its place
+      }
+    }
+    const auto done = [&](std::size_t k, const std::vector<FT>& d, const CGAL::DGG_VTP_3::Propagation_statistics&) {
+      Sparse_row r;
+      sparse_row(m_soup, d, &m_merged, r);
+      row(computed[k], std::move(r));
+    };
+    const auto sets = solver_vertex_sets(m_soup, file_vertices);
+    with_threads(query.threads, [&](auto tag) {
+      m_solver->template compute_distances_from_each_source_set<decltype(tag)>(sets, done, named_parameters(query));
+    });
+  }
+
+  std::vector<double> target_distances(const Query& query, std::vector<Moved_point>& moved) const override
   {
     std::vector<double> out;
-    with_places(query, [&](const auto& q) {
+    with_places(query, moved, [&](const auto& q) {
       std::vector<FT> d(m_solver->number_of_vertices());
       std::vector<FT> at_targets;
       with_threads(query.threads, [&](auto tag) {
@@ -159,30 +220,23 @@ public:
     return out;
   }
 
-  Polyline shortest_path(const Query& query) const override
+  // the paths of one propagation, which stops once they are final
+  Paths shortest_paths(const Query& query, std::vector<Moved_point>& moved) const override
   {
-    Polyline line;
-    with_places(query, [&](const auto& q) {
+    Paths paths;
+    with_places(query, moved, [&](const auto& q) {
       using Tree = decltype(m_solver->compute_shortest_path_tree(q.sources));
       std::optional<Tree> tree;
       with_threads(query.threads, [&](auto tag) {
         tree.emplace(m_solver->template compute_shortest_path_tree<decltype(tag)>(
           q.sources, CGAL::DGG_VTP_3::parameters::targets(q.targets, named_parameters(query))));
       });
-      std::vector<typename Tree::Path_point> path;
-      const auto& t = q.path_places.front();
-      if(t.vertices.empty())
-        tree->shortest_path_to_target(t.point, std::back_inserter(path));
-      else
-      {
-        std::vector<FT> d(m_solver->number_of_vertices());
-        for(std::size_t v = 0; v < d.size(); ++v)
-          d[v] = tree->distance(v);
-        tree->shortest_path(nearest_copy(t.vertices, d), std::back_inserter(path));
-      }
-      line = polyline_of(path, m_soup.points, m_soup.triangles).first;
+      std::vector<FT> d(m_solver->number_of_vertices());
+      for(std::size_t v = 0; v < d.size(); ++v)
+        d[v] = tree->distance(v);
+      paths = trace_paths(*tree, q, d, m_soup.points, m_soup.triangles);
     });
-    return line;
+    return paths;
   }
 
 private:
@@ -209,17 +263,18 @@ private:
     void finish(long long* labels, const std::vector<long long>& label)
     {
       if(direct())
-      {
         std::copy(label.begin(), label.end(), labels);
-        return;
-      }
-      const std::vector<double> d = file_vertex_distances(m_s.m_soup, m_scratch);
-      std::copy(d.begin(), d.end(), m_out);
-      if(labels)
+      else
       {
-        const std::vector<long long> l = file_vertex_labels(m_s.m_soup, m_scratch, label);
-        std::copy(l.begin(), l.end(), labels);
+        const std::vector<double> d = file_vertex_distances(m_s.m_soup, m_scratch);
+        std::copy(d.begin(), d.end(), m_out);
+        if(labels)
+        {
+          const std::vector<long long> l = file_vertex_labels(m_s.m_soup, m_scratch, label);
+          std::copy(l.begin(), l.end(), labels);
+        }
       }
+      m_s.m_record.apply(m_out, labels);
     }
 
   private:
@@ -233,19 +288,84 @@ private:
     return CGAL::DGG_VTP_3::parameters::max_distance(query.max_distance).accuracy(query.epsilon);
   }
 
-  // Runs `f` with the query's places in the solver's numbering: vertices, or Face_locations when a
-  // point is given (located on the solver's triangles, as dggvtp locates them).
-  template <class F>
-  void with_places(const Query& query, F f) const
+  // Where F's faces are among the solver's triangles: face f is triangle f while the input policy
+  // keeps them all in F's order (it may turn or split them); after repairs, triangles are found by
+  // their file vertices.
+  void index_faces()
   {
-    if(!query.has_points())
-      return run_with(query_places<Solver, std::size_t>(m_soup, nullptr, query.sources, query.targets,
-                                                        query.path_targets), f);
+    const auto corners = [](const auto& corners_of, std::size_t i) {
+      Face c{};
+      for(int k = 0; k < 3; ++k)
+        c[k] = std::uint32_t(corners_of(i, k));
+      std::sort(c.begin(), c.end());
+      return c;
+    };
+    const auto of_triangle = [this](std::size_t t, int k) { return m_soup.file_vertex_of[m_soup.triangles[t][k]]; };
+    const auto of_face = [this](std::size_t f, int k) { return m_faces[f][k]; };
+    m_faces_are_triangles = m_faces.size() == m_soup.triangles.size();
+    for(std::size_t f = 0; m_faces_are_triangles && f < m_faces.size(); ++f)
+      m_faces_are_triangles = corners(of_face, f) == corners(of_triangle, f);
+    if(m_faces_are_triangles)
+      return;
+    std::map<Face, std::size_t> triangle_at;
+    for(std::size_t t = 0; t < m_soup.triangles.size(); ++t)
+      triangle_at.emplace(corners(of_triangle, t), t);
+    m_triangle_of_face.assign(m_faces.size(), no_triangle);
+    for(std::size_t f = 0; f < m_faces.size(); ++f)
+      if(const auto t = triangle_at.find(corners(of_face, f)); t != triangle_at.end())
+        m_triangle_of_face[f] = t->second;
+  }
+
+  // The place `p` in the solver's numbering: a vertex a repair merged is the vertex at its place;
+  // a point on face f of F is on its triangle (its coordinates in the triangle's corner order), or,
+  // where the repairs left no triangle with f's corners, the 3D point it makes, located.
+  Place solver_place(Place p, const char* what) const
+  {
+    if(!p.is_point && !p.is_face_point)
+      p.vertex = m_record.file_vertex(p.vertex, what);
+    if(!p.is_face_point)
+      return p;
+    const Face& face = m_faces[p.triangle];
+    const std::size_t t = m_faces_are_triangles ? p.triangle : m_triangle_of_face[p.triangle];
+    if(t == no_triangle)
+    {
+      p.is_face_point = false;
+      p.is_point = true;
+      p.point = {0., 0., 0.};
+      for(int k = 0; k < 3; ++k)
+        for(int c = 0; c < 3; ++c)
+          p.point[c] += p.barycentric[k] * m_soup.points[face[k]][c];
+      return p;
+    }
+    std::array<double, 3> b{};
+    for(int j = 0; j < 3; ++j)
+      for(int k = 0; k < 3; ++k)
+        if(m_soup.file_vertex_of[m_soup.triangles[t][j]] == face[k])
+          b[j] = p.barycentric[k];
+    p.triangle = t;
+    p.barycentric = b;
+    return p;
+  }
+
+  // Runs `f` with the query's places in the solver's numbering: vertices, or Face_locations when a
+  // point is given (3D points located on the solver's triangles, as dggvtp locates them).
+  template <class F>
+  void with_places(const Query& query, std::vector<Moved_point>& moved, F f) const
+  {
+    std::vector<Place> sources, targets, path_targets;
+    for(const auto& [from, to, what] : {std::make_tuple(&query.sources, &sources, "source"),
+                                        std::make_tuple(&query.targets, &targets, "target"),
+                                        std::make_tuple(&query.path_targets, &path_targets, "target")})
+      for(const Place& p : *from)
+        to->push_back(solver_place(p, what));
+    if(!has_points({&sources, &targets, &path_targets}))
+      return run_with(query_places<Solver, std::size_t>(m_soup, nullptr, sources, targets, path_targets), f);
     std::unique_lock<std::mutex> lock(m_locator_mutex); // its first query builds a search tree
-    if(!m_locator)
+    if(!m_locator && needs_locator({&sources, &targets, &path_targets}))
       m_locator = std::make_unique<Point_locator>(m_soup.points, m_soup.triangles);
-    auto q = query_places<Solver, Location>(m_soup, m_locator.get(), query.sources, query.targets, query.path_targets);
+    auto q = query_places<Solver, Location>(m_soup, m_locator.get(), sources, targets, path_targets);
     lock.unlock();
+    moved.insert(moved.end(), q.moved_points.begin(), q.moved_points.end());
     run_with(q, f);
   }
 
@@ -257,18 +377,27 @@ private:
     f(q);
   }
 
-  Loaded_soup m_soup; // kept: the copies' file vertices, and the triangles to locate points on
+  static constexpr std::size_t no_triangle = std::size_t(-1);
+
+  Loaded_soup m_soup;         // kept: the copies' file vertices, the triangles to locate points on
+  std::vector<Face> m_faces;  // F, for points on its faces
+  bool m_faces_are_triangles = true;          // face f of F is triangle f of the soup
+  std::vector<std::size_t> m_triangle_of_face; // or else this (no_triangle: none)
+  Repair_record m_record;     // what repair=True did to V's vertices
+  std::map<std::size_t, std::vector<std::size_t>> m_merged; // m_record's merged vertices, by stand-in
   std::optional<Solver> m_solver;
   bool m_same_vertices = true;
   mutable std::mutex m_locator_mutex;
-  mutable std::unique_ptr<Point_locator> m_locator; // made by the first query with a point
+  mutable std::unique_ptr<Point_locator> m_locator; // made by the first query with a 3D point
 };
 
-inline std::unique_ptr<Solver_interface> make_soup_solver(Loaded_soup&& soup, const std::string& precision)
+inline std::unique_ptr<Solver_interface> make_soup_solver(Loaded_soup&& soup, std::vector<std::array<std::uint32_t, 3>>&& faces,
+                                                          const std::string& precision, const Repair_option& repair)
 {
   if(precision == "float")
-    return std::make_unique<Soup_solver<CGAL::Simple_cartesian<float>>>(std::move(soup));
-  return std::make_unique<Soup_solver<CGAL::Exact_predicates_inexact_constructions_kernel>>(std::move(soup));
+    return std::make_unique<Soup_solver<CGAL::Simple_cartesian<float>>>(std::move(soup), std::move(faces), repair);
+  return std::make_unique<Soup_solver<CGAL::Exact_predicates_inexact_constructions_kernel>>(std::move(soup),
+                                                                                            std::move(faces), repair);
 }
 
 } // namespace python

@@ -3,7 +3,8 @@
 //
 // Author(s): DGG-VTP for CGAL team
 
-// The docstrings of the Python module dggvtp (help(dggvtp.GeodesicSolver) shows them).
+// The docstrings of the Python module dggvtp (help(dggvtp.GeodesicSolver) shows them, after the
+// signature pybind11 writes from the arguments' types).
 
 #ifndef DGGVTP_PYTHON_DOCSTRINGS_H
 #define DGGVTP_PYTHON_DOCSTRINGS_H
@@ -13,15 +14,19 @@ namespace doc {
 const char* const module = R"(Geodesic distances on triangle meshes by window propagation (DGG-VTP for CGAL).
 
 Exact distances (the VTP algorithm, epsilon = 0) or distances within a relative error epsilon of
-the exact ones (DGG-VTP), from vertices or surface points to every vertex, to chosen targets, and
-shortest paths. NumPy arrays in, NumPy arrays out; unreachable vertices get inf.
+the exact ones (DGG-VTP), from vertices or surface points to every vertex, to chosen targets,
+shortest paths, and sparse matrices of the distances within a radius. NumPy arrays in, NumPy
+arrays out; unreachable vertices get inf.
 
     V, F = dggvtp.read_mesh("mesh.ply")
     solver = dggvtp.GeodesicSolver(V, F)
     d = solver.distances(0)                       # exact, (n,) float64
+    d = dggvtp.geodesic_distances(V, F, 0)        # the same, in one call
 
 Bad input raises ValueError (dggvtp.InputError, a subclass, for the input policy of the mesh
-loader). Every computation releases the GIL: several Python threads may query one solver at once.
+loader); what the dggvtp program reports as a warning (repairs, unreachable vertices, points far
+from the surface) is a RuntimeWarning. Every computation releases the GIL: several Python threads
+may query one solver at once.
 )";
 
 const char* const input_error = R"(Input refused by the mesh loader's input policy (a ValueError).)";
@@ -31,82 +36,132 @@ fast readers, the same checks, the same vertex order.
 
 Returns V, a float64 array (n, 3) of the file's vertices in the file's order, and F, an int64
 array (m, 3) of its triangles, each with its corners in the file's order; faces with more than 3
-vertices are triangulated (ear clipping, as dggvtp does). GeodesicSolver(V, F) then gives the
-distances dggvtp gives for the file, bit for bit (for a file of triangles).
+vertices are triangulated (ear clipping, as dggvtp does; a RuntimeWarning says so).
+GeodesicSolver(V, F) then gives the distances dggvtp gives for the file, bit for bit (for a file
+of triangles).
+
+repair: False (default) refuses a face that repeats a vertex. True drops such faces and makes
+the repairs of dggvtp --repair (CGAL's stitch_borders, remove_degenerate_faces,
+remove_almost_degenerate_faces, remove_isolated_vertices), one RuntimeWarning per kind of repair:
+V keeps every vertex of the file, in its order (at its repaired place), and F holds the repaired
+triangles; a vertex the repairs removed or merged with another is in no face of F (distances:
+inf). For the per-vertex results of dggvtp --repair (such vertices nan, or the distance of the
+vertex they were merged with), give the file's arrays to GeodesicSolver(V, F, repair=True).
 
 Raises ValueError (InputError) for an unreadable, empty or truncated file, a coordinate that is
-not finite, a face with fewer than 3 or repeated vertices, an index out of range, or a polygon
-that cannot be triangulated.
+not finite, a face with fewer than 3 vertices, an index out of range, or a polygon that cannot be
+triangulated.
 )";
 
-const char* const solver = R"(GeodesicSolver(V, F, precision="double")
+const char* const solver = R"(GeodesicSolver(V, F, precision="double", *, repair=False)
 
 A triangle mesh prepared once for any number of geodesic distance queries.
 
-V: (n, 3) vertex coordinates, any array-like of real numbers (converted to float64).
+V: (n, 3) vertex coordinates, any array-like of real numbers (converted to float64); (n, 2) for
+    a mesh of the plane z = 0.
 F: (m, 3) triangles, any array-like of integers: 0-based indices into V.
 precision: "double" (default) or "float", the number type of the computation (as dggvtp
     --precision); results are float64 either way.
+repair: the repairs of dggvtp --repair (see read_mesh), the results still per vertex of V: a
+    vertex the repairs removed gets nan (label -1), one merged with another at its place gets
+    that one's distance; a source or target there is that one, or a ValueError if removed. Faces
+    that repeat a vertex are dropped.
 
 The mesh goes through dggvtp's input policy: inconsistent orientations are fixed and vertices
-where several sheets meet are split (see `repairs`); results are still per vertex of V (the
-nearest copy). Degenerate faces, slivers, too short edges and too sharp cone tips raise
-ValueError with the library's message.
+where several sheets meet are split (a RuntimeWarning and `repairs` say so); results are still
+per vertex of V (the nearest copy). Degenerate faces, slivers, too short edges and too sharp cone
+tips raise ValueError with the library's message.
 
 Queries are const and release the GIL: Python threads may call them on one solver at once.
 Common keyword arguments of the queries:
-  epsilon: 0 (default) for exact distances, or > 0 (finite) for DGG-VTP, every distance within a
+  epsilon: 0 (default) for exact distances, or in (0, 1] for DGG-VTP, every distance within a
       relative error epsilon of the exact one.
   max_distance: the propagation stops there; farther vertices get inf (default inf).
   threads: threads of one propagation (TBB), 0 = all cores, default 1 (sequential); the result
       is the same bit for bit for any number. TBB's limit is process-wide: concurrent calls
       share the smallest.
-Sources: `sources` are vertex indices (an int or a sequence), `points` are 3D points (a (k, 3)
-or (3,) array-like) taken at the nearest point of the surface (CGAL's locate_with_AABB_tree, as
-dggvtp --source-point); both may be given. A point at a vertex's coordinates is that vertex.
+Sources (and targets likewise): `sources` are vertex indices (an int or a sequence), `points`
+are 3D points (a (k, 3) or (3,) array-like) taken at the nearest point of the surface (CGAL's
+locate_with_AABB_tree, as dggvtp --source-point; one farther than 1e-6 times the bounding box's
+diagonal gives a RuntimeWarning), `face_points` are points on faces of F as a pair (faces,
+barycentric): face indices (k,) and the barycentric coordinates (k, 3) of their corners in F's
+order, each at least 0 and adding up to 1 (within 1e-12): the same result as the 3D point they
+make, without locating it. Any of them may be given together. A point at a vertex's coordinates,
+or at a corner of a face, is that vertex.
+Unreachable vertices, targets or paths (without max_distance) give a RuntimeWarning, as dggvtp
+prints a warning for them.
 )";
 
 const char* const init = R"(Prepares the mesh (V, F) for queries; see the class's documentation.
 
 Raises ValueError for arrays of the wrong shape or kind of numbers, an index out of range, a
-face using a vertex twice, a coordinate that is not finite, or a mesh the input policy refuses.
+face using a vertex twice (without repair), a coordinate that is not finite, or a mesh the input
+policy refuses.
 )";
 
 const char* const num_vertices = "Number of vertices of V (the length of a distance array).";
 const char* const num_faces = "Number of triangles the solver uses (after the input policy's repairs).";
 const char* const precision = "The number type of the computation: 'double' or 'float'.";
-const char* const repairs = "What the input policy changed in the mesh (orientations, split vertices), one line each.";
+const char* const repairs = "What the input policy and repair=True changed in the mesh, one line each.";
 
 const char* const distances = R"(Geodesic distance of every vertex to the nearest source.
 
-sources: a vertex index or a sequence of them; points: (k, 3) surface points (see the class).
-Returns a float64 array (num_vertices,), inf where unreachable (another component, a vertex no
-face uses, beyond max_distance). With return_labels=True, returns (distances, labels): labels
-int64 (num_vertices,), the index of each vertex's nearest source in the list of the sources
-followed by the points, -1 where unreachable.
+sources, points, face_points: the sources (see the class). Returns a float64 array
+(num_vertices,), inf where unreachable (another component, a vertex no face uses, beyond
+max_distance). With return_labels=True, returns (distances, labels): labels int64
+(num_vertices,), the index of each vertex's nearest source in the list of the sources followed
+by the points and the face points, -1 where unreachable.
 
 The same values as dggvtp --source ... --source-point ... --output, bit for bit.
-Raises ValueError for an index out of range, no source, points that are not finite, a negative
-or non-finite epsilon, a negative or NaN max_distance, threads < 0.
+Raises ValueError for an index out of range, no source, points that are not finite, barycentric
+coordinates that are negative or do not add up to 1, an epsilon outside [0, 1], a negative or NaN
+max_distance, threads < 0.
 )";
 
 const char* const distances_from_each = R"(One distance field per source vertex: a float64 array (len(sources), num_vertices) whose row k
 is distances(sources[k]) (as dggvtp-batch's rows, bit for bit). With threads != 1 the rows are
-shared among the threads, each row one sequential propagation.
+shared among the threads, each row one sequential propagation. It holds len(sources) x
+num_vertices numbers: for the distances within a radius from many sources, see
+local_distance_matrix().
+)";
+
+const char* const local_distance_matrix = R"(The distances within max_distance from each source vertex, as a scipy.sparse.csr_matrix of
+shape (len(sources), num_vertices) (default sources=None: every vertex, in order, a square
+matrix): row k holds every vertex at distance <= max_distance from sources[k], with its
+distance, and no other; as an array, with inf where there is no entry, it is
+distances(sources[k], max_distance=max_distance, epsilon=epsilon), bit for bit (and the rows of
+dggvtp-batch --max-distance). The source itself is an explicit 0 (eliminate_zeros() would drop
+it). The memory is in proportion to the entries (about 12 bytes each), never num_vertices
+squared; indices are int32 unless there are more than 2^31 entries.
+
+The rows are shared among `threads` threads (0: all cores), each one sequential propagation,
+with the GIL released. With repair=True, a vertex the repairs removed has an empty row and no
+entry. Raises ValueError for a max_distance that is negative, NaN or inf.
 )";
 
 const char* const target_distances = R"(Distances of chosen targets to the nearest source; the propagation stops once they are final
 (cheaper than a full field for near targets).
 
-targets: vertex indices; target_points: (k, 3) surface points (exact distance at the point,
-not an interpolation). Returns a float64 array: the targets' distances, then the points', inf
-where unreachable. The same values as dggvtp --target / --target-point.
+targets: vertex indices; target_points: (k, 3) surface points; target_face_points: (faces,
+barycentric) points on faces of F (exact distance at the point, not an interpolation). Returns a
+float64 array: the targets' distances, then the points', then the face points', inf where
+unreachable. The same values as dggvtp --target / --target-point.
 )";
 
-const char* const shortest_path = R"(The shortest path on the surface from one target (a vertex `target`, or a surface point
-`target_point`) back to its nearest source: a float64 array (m, 3) of points, from the target to
-the source; empty (0, 3) if the target is unreachable. Its length is the target's distance. The
-same points as dggvtp --path-to / --path-to-point --paths.
+const char* const shortest_paths = R"(The shortest paths on the surface from several targets (targets: vertices, target_points: 3D
+points, target_face_points: (faces, barycentric)) back to their nearest sources, from one
+propagation that stops once they are final. Returns (paths, lengths): a list of float64 arrays
+(m, 3) of points, from the target to the source, in the order targets, target_points,
+target_face_points (an unreachable target's path is empty, (0, 3)), and a float64 array of their
+lengths (inf where unreachable), each the target's distance. The same points as dggvtp
+--path-to / --path-to-point --paths.
+)";
+
+const char* const shortest_path = R"(The shortest path on the surface from one target (a vertex `target`, a surface point
+`target_point`, or a point on a face `target_face_point` = (face, barycentric)) back to its
+nearest source: a float64 array (m, 3) of points, from the target to the source; empty (0, 3) if
+the target is unreachable. Its length is the target's distance. shortest_paths() traces several
+from one propagation.
 )";
 
 } // namespace doc

@@ -3,17 +3,25 @@
 //
 // Author(s): DGG-VTP for CGAL team
 
-// The Python module dggvtp: NumPy arrays in, NumPy arrays out. Arguments are checked and converted
-// here, with the GIL held; every computation runs with the GIL released (Soup_solver.h).
+// The extension module dggvtp._dggvtp (the package dggvtp re-exports it): NumPy arrays in, NumPy
+// arrays out. Arguments are checked and converted here, with the GIL held (arguments.h); every
+// computation runs with the GIL released (Soup_solver.h); what dggvtp says on stderr as a
+// warning: line becomes a RuntimeWarning.
 
 #include "Soup_solver.h"
+#include "arguments.h"
+#include "typed_object.h"
+
+#include <CGAL/DGG_VTP_3/version.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <string>
@@ -25,89 +33,60 @@ using namespace pybind11::literals;
 
 namespace {
 
+using namespace dggvtp::python;
 using dggvtp::Place;
-using dggvtp::python::Query;
-using dggvtp::python::Solver_interface;
 
 const double infinity = std::numeric_limits<double>::infinity();
 
-[[noreturn]] void bad(const std::string& message) { throw py::value_error(message); }
-
-// `object` as a NumPy array of `dtype`, refusing other kinds of numbers than `kinds` (a silent
-// conversion of floats to indices, or of strings to numbers, would hide a mistake)
-py::array as_array(const py::handle& object, const char* name, const char* kinds, const char* dtype)
+void warn(const std::string& message)
 {
-  py::object a;
-  try
-  {
-    a = py::module_::import("numpy").attr("asarray")(object);
-  }
-  catch(const py::error_already_set& e)
-  {
-    bad(std::string(name) + " is not an array of numbers: " + e.what());
-  }
-  std::string kind = py::str(a.attr("dtype").attr("kind"));
-  if(py::int_(a.attr("size")).cast<std::size_t>() == 0) // [] is float64 for NumPy
-    kind = "i";
-  if(kind.empty() || std::string(kinds).find(kind) == std::string::npos)
-    bad(std::string(name) + " must hold " + (std::string(kinds) == "iu" ? "integers" : "real numbers") + ", not " +
-        std::string(py::str(a.attr("dtype"))));
-  return py::array(a.attr("astype")(dtype, "copy"_a = false));
+  if(PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 1) != 0) // the warnings filter made it an error
+    throw py::error_already_set();
 }
 
-// an (m, 3) array, or (3,) for one row when `one_row` is allowed
-template <class T>
-py::array_t<T, py::array::c_style | py::array::forcecast> rows_of_3(const py::handle& object, const char* name,
-                                                                    const char* kinds, const char* dtype, bool one_row)
+// number_text: a number as dggvtp writes it (%.17g)
+std::string number_text(double x)
 {
-  py::array a = as_array(object, name, kinds, dtype);
-  if(one_row && a.ndim() == 1 && a.shape(0) == 3)
-    a = a.attr("reshape")(1, 3);
-  if(a.ndim() != 2 || a.shape(1) != 3)
-    bad(std::string(name) + " must have shape (" + (one_row ? "k" : "n") + ", 3), not " +
-        std::string(py::str(a.attr("shape"))));
-  return py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
 }
 
-// vertices given as an int, a sequence of ints or None (none), checked against the mesh
-std::vector<Place> vertex_places(const py::handle& object, const char* what, std::size_t vertices)
+// The places of one range of a query (sources, targets or path targets) with the names of the
+// arguments they came from, for warnings that point at one ("points[2]")
+struct Named_places
 {
   std::vector<Place> places;
-  if(object.is_none())
-    return places;
-  const py::array a = as_array(object, what, "iu", "int64");
-  if(a.ndim() > 1)
-    bad(std::string(what) + " must be a vertex index or a sequence of them");
-  const auto v = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a.attr("reshape")(-1));
-  for(py::ssize_t i = 0; i < v.size(); ++i)
+  std::vector<std::pair<std::size_t, std::string>> arguments; // (its first place, its name)
+
+  void add(std::vector<Place>&& more, const std::string& argument)
   {
-    if(v.at(i) < 0 || std::uint64_t(v.at(i)) >= vertices)
-      bad(std::string(what) + " " + std::to_string(v.at(i)) + " is out of range (the mesh has " +
-          std::to_string(vertices) + " vertices)");
-    Place p;
-    p.vertex = std::size_t(v.at(i));
-    places.push_back(p);
+    arguments.emplace_back(places.size(), argument);
+    places.insert(places.end(), more.begin(), more.end());
   }
-  return places;
+  std::string name_of(std::size_t place) const
+  {
+    auto a = arguments.begin();
+    while(a + 1 != arguments.end() && (a + 1)->first <= place)
+      ++a;
+    return a->second + "[" + std::to_string(place - a->first) + "]";
+  }
+};
+
+// the 3D points that a query took at the surface far from where they were given
+void warn_moved(const std::vector<dggvtp::Moved_point>& moved, const Named_places* ranges[3])
+{
+  for(const auto& m : moved)
+    warn(ranges[int(m.range)]->name_of(m.place) + " (" + number_text(m.point[0]) + ", " + number_text(m.point[1]) + ", " +
+         number_text(m.point[2]) + ") is " + number_text(m.distance) +
+         " away from the surface: taken at the nearest point of the surface");
 }
 
-// 3D points as a (k, 3) or (3,) array-like, or None (none); located on the surface later
-std::vector<Place> point_places(const py::handle& object, const char* what)
+void warn_unreachable(std::size_t unreachable, std::size_t total, const char* what, double max_distance)
 {
-  std::vector<Place> places;
-  if(object.is_none())
-    return places;
-  const auto a = rows_of_3<double>(object, what, "iuf", "float64", true);
-  for(py::ssize_t i = 0; i < a.shape(0); ++i)
-  {
-    Place p;
-    p.is_point = true;
-    for(int c = 0; c < 3; ++c)
-      if(!std::isfinite(p.point[c] = a.at(i, c)))
-        bad(std::string(what) + " needs finite coordinates (row " + std::to_string(i) + ")");
-    places.push_back(p);
-  }
-  return places;
+  if(std::isinf(max_distance)) // beyond max_distance, they are unreached by request
+    if(const std::string w = dggvtp::unreachable_warning(unreachable, total, what); !w.empty())
+      warn(w);
 }
 
 struct Geodesic_solver
@@ -115,76 +94,112 @@ struct Geodesic_solver
   std::unique_ptr<Solver_interface> solver;
   std::string precision;
 
-  Query query(const py::object& sources, const py::object& points, double epsilon, double max_distance,
-              long threads, bool needs_source = true) const
+  std::size_t vertices() const { return solver->number_of_vertices(); }
+
+  Query query(double epsilon, double max_distance, long threads) const
   {
     if(threads < 0)
       bad("threads must be >= 0 (0: all cores)");
     Query q;
-    q.sources = vertex_places(sources, "source", solver->number_of_vertices());
-    for(const Place& p : point_places(points, "points"))
-      q.sources.push_back(p);
-    if(q.sources.empty() && needs_source)
-      bad("no source given (sources or points)");
     q.epsilon = epsilon;
     q.max_distance = max_distance;
     q.threads = threads;
     return q;
   }
+
+  // The places of three arguments: vertices, 3D points and points on faces; `names`: theirs, and
+  // what a vertex of the first is called in messages
+  Named_places places(const Vertices& vertices, const Points& points, const Face_points& face_points,
+                      const std::array<const char*, 4>& names) const
+  {
+    Named_places out;
+    out.add(vertex_places(vertices, names[3], this->vertices()), names[0]);
+    out.add(point_places(points, names[1]), names[1]);
+    out.add(face_point_places(face_points, names[2], solver->number_of_faces()), names[2]);
+    return out;
+  }
+
+  Named_places sources(const Vertices& vertices, const Points& points, const Face_points& face_points) const
+  {
+    Named_places s = places(vertices, points, face_points, {"sources", "points", "face_points", "source"});
+    if(s.places.empty())
+      bad("no source given (sources, points or face_points)");
+    return s;
+  }
+
+  Named_places targets(const Vertices& vertices, const Points& points, const Face_points& face_points) const
+  {
+    Named_places t = places(vertices, points, face_points, {"targets", "target_points", "target_face_points", "target"});
+    if(t.places.empty())
+      bad("no target given (targets, target_points or target_face_points)");
+    return t;
+  }
+
+  // the paths of one propagation as (m, 3) arrays, and their lengths
+  std::pair<std::vector<py::array_t<double>>, py::array_t<double>> paths(Query& q, const Named_places& sources,
+                                                                         const Named_places& targets) const
+  {
+    q.sources = sources.places;
+    q.path_targets = targets.places;
+    std::vector<dggvtp::Moved_point> moved;
+    Paths paths;
+    {
+      py::gil_scoped_release unlocked;
+      paths = solver->shortest_paths(q, moved);
+    }
+    const Named_places* ranges[3] = {&sources, &targets, &targets};
+    warn_moved(moved, ranges);
+    std::vector<py::array_t<double>> lines;
+    std::vector<double> lengths;
+    for(const auto& [line, length] : paths)
+    {
+      py::array_t<double> path({py::ssize_t(line.size()), py::ssize_t(3)});
+      if(!line.empty())
+        std::memcpy(path.mutable_data(), line.data(), line.size() * sizeof line[0]);
+      lines.push_back(path);
+      lengths.push_back(length);
+    }
+    warn_unreachable(dggvtp::count_infinite(lengths), lengths.size(), "paths", q.max_distance);
+    return {lines, py::array_t<double>(py::ssize_t(lengths.size()), lengths.data())};
+  }
 };
 
-// The soup of arrays V, F: the file's soup of the same vertices and triangles as dggvtp's loader
-// makes it (the corners in a Surface_mesh face's order), refusing what its readers refuse.
-dggvtp::Loaded_soup soup_of_arrays(const py::object& V, const py::object& F)
+dggvtp::Repair_option repair_option(bool repair) { return {"repair=True", repair}; }
+
+// The method `name` of `c` that takes the arguments of the queries to several targets and answers
+// f(solver, query, sources, targets)
+template <class Class, class F>
+void def_targets_query(Class& c, const char* name, F f, const char* doc)
 {
-  const auto v = rows_of_3<double>(V, "V", "iuf", "float64", false);
-  const auto f = rows_of_3<std::int64_t>(F, "F", "iu", "int64", false);
-  const std::size_t n = std::size_t(v.shape(0));
-  if(n == 0)
-    bad("V has no vertices");
-  if(n >= std::numeric_limits<std::uint32_t>::max())
-    bad("V has too many vertices (at most 2^32 - 2)");
-  dggvtp::Loaded_soup soup;
-  soup.points.reserve(n);
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    if(!std::isfinite(v.at(i, 0)) || !std::isfinite(v.at(i, 1)) || !std::isfinite(v.at(i, 2)))
-      bad("vertex " + std::to_string(i) + " has a coordinate that is not finite");
-    soup.points.emplace_back(v.at(i, 0), v.at(i, 1), v.at(i, 2));
-  }
-  soup.triangles.reserve(std::size_t(f.shape(0)));
-  for(py::ssize_t t = 0; t < f.shape(0); ++t)
-  {
-    std::uint32_t corners[3];
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::int64_t i = f.at(t, k);
-      if(i < 0 || std::uint64_t(i) >= n)
-        bad("face " + std::to_string(t) + " refers to vertex " + std::to_string(i) + ", but the mesh has " +
-            std::to_string(n) + " vertices");
-      corners[k] = std::uint32_t(i);
-      for(int j = 0; j < k; ++j)
-        if(corners[j] == corners[k])
-          bad("face " + std::to_string(t) + " uses vertex " + std::to_string(i) + " twice");
-    }
-    soup.triangles.push_back(dggvtp::as_surface_mesh_face(corners));
-  }
-  dggvtp::internal::number_file_vertices(soup);
-  return soup;
+  c.def(
+    name,
+    [f](const Geodesic_solver& s, const Vertices& sources, const Points& points, const Face_points& face_points,
+        const Vertices& targets, const Points& target_points, const Face_points& target_face_points, double epsilon,
+        double max_distance, long threads) {
+      Query q = s.query(epsilon, max_distance, threads);
+      return f(s, q, s.sources(sources, points, face_points), s.targets(targets, target_points, target_face_points));
+    },
+    "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
+    "targets"_a = py::none(), "target_points"_a = py::none(), "target_face_points"_a = py::none(), "epsilon"_a = 0.,
+    "max_distance"_a = infinity, "threads"_a = 1, doc);
 }
 
-py::tuple read_mesh(const py::object& path)
+std::pair<py::array_t<double>, py::array_t<std::int64_t>> read_mesh(const Path& path, bool repair)
 {
-  const std::string file = py::str(py::module_::import("os").attr("fspath")(path));
+  const std::string file = py::str(py::module_::import("os").attr("fspath")(path.object));
   dggvtp::Loaded_soup soup;
   {
     py::gil_scoped_release unlocked;
-    soup = dggvtp::load_soup(file);
-    if(soup.polygons.empty())
-      dggvtp::triangles_to_polygons(soup); // back to the file's corner order
-    else
+    soup = dggvtp::load_soup(file, repair_option(repair));
+    if(repair)
+      dggvtp::repair_soup(soup, repair_option(repair)); // its triangles, over the file's vertices
+    if(!soup.polygons.empty())
       dggvtp::internal::triangulate_soup(soup);
+    else
+      dggvtp::triangles_to_polygons(soup); // back to the file's corner order
   }
+  for(const std::string& line : soup.repairs)
+    warn(file + ": " + line);
   py::array_t<double> V({py::ssize_t(soup.file_vertices), py::ssize_t(3)});
   py::array_t<std::int64_t> F({py::ssize_t(soup.polygons.size()), py::ssize_t(3)});
   auto v = V.mutable_unchecked<2>();
@@ -194,120 +209,193 @@ py::tuple read_mesh(const py::object& path)
       v(i, c) = soup.points[i][c];
   for(std::size_t t = 0; t < soup.polygons.size(); ++t)
     for(int k = 0; k < 3; ++k)
-      f(t, k) = std::int64_t(soup.polygons[t][k]);
-  return py::make_tuple(V, F);
+      f(t, k) = std::int64_t(soup.file_vertex_of[soup.polygons[t][k]]);
+  return {V, F};
+}
+
+// The rows as scipy.sparse.csr_matrix((data, indices, indptr), shape): int32 indices, as SciPy
+// makes them, unless the matrix is too large for them
+template <class Index>
+py::object csr_matrix(std::vector<dggvtp::Sparse_row>& rows, std::size_t columns)
+{
+  std::size_t nonzeros = 0;
+  for(const auto& r : rows)
+    nonzeros += r.columns.size();
+  py::array_t<double> data{py::ssize_t(nonzeros)};
+  py::array_t<Index> indices{py::ssize_t(nonzeros)}, indptr{py::ssize_t(rows.size() + 1)};
+  {
+    py::gil_scoped_release unlocked;
+    double* d = data.mutable_data();
+    Index* i = indices.mutable_data();
+    Index* p = indptr.mutable_data();
+    std::size_t at = 0;
+    p[0] = 0;
+    for(std::size_t k = 0; k < rows.size(); ++k)
+    {
+      std::copy(rows[k].values.begin(), rows[k].values.end(), d + at);
+      std::copy(rows[k].columns.begin(), rows[k].columns.end(), i + at);
+      at += rows[k].columns.size();
+      p[k + 1] = Index(at);
+      dggvtp::Sparse_row().columns.swap(rows[k].columns); // its memory back, row by row
+      std::vector<double>().swap(rows[k].values);
+    }
+  }
+  return py::module_::import("scipy.sparse")
+    .attr("csr_matrix")(py::make_tuple(data, indices, indptr), "shape"_a = py::make_tuple(rows.size(), columns));
 }
 
 } // namespace
 
 #include "docstrings.h"
 
-PYBIND11_MODULE(dggvtp, m)
+PYBIND11_MODULE(_dggvtp, m)
 {
   m.doc() = doc::module;
+  m.attr("__version__") = DGG_VTP_3_VERSION_STR;
   py::register_exception<dggvtp::Input_error>(m, "InputError", PyExc_ValueError);
   m.attr("InputError").attr("__doc__") = doc::input_error;
 
-  m.def("read_mesh", &read_mesh, "path"_a, doc::read_mesh);
+  m.def("read_mesh", &read_mesh, "path"_a, py::kw_only(), "repair"_a = false, doc::read_mesh);
 
-  py::class_<Geodesic_solver>(m, "GeodesicSolver", doc::solver)
-    .def(py::init([](const py::object& V, const py::object& F, const std::string& precision) {
+  py::class_<Geodesic_solver> solver(m, "GeodesicSolver", doc::solver);
+  solver
+    .def(py::init([](const Array_like& V, const Array_like& F, const std::string& precision, bool repair) {
            if(precision != "double" && precision != "float")
              bad("precision must be 'double' or 'float', not '" + precision + "'");
-           dggvtp::Loaded_soup soup = soup_of_arrays(V, F);
-           py::gil_scoped_release unlocked;
-           return Geodesic_solver{dggvtp::python::make_soup_solver(std::move(soup), precision), precision};
+           std::vector<std::array<std::uint32_t, 3>> faces;
+           dggvtp::Loaded_soup soup = soup_of_arrays(V, F, repair_option(repair), faces);
+           Geodesic_solver s;
+           s.precision = precision;
+           {
+             py::gil_scoped_release unlocked;
+             s.solver = make_soup_solver(std::move(soup), std::move(faces), precision, repair_option(repair));
+           }
+           for(const std::string& line : s.solver->repairs())
+             warn("GeodesicSolver(V, F): " + line);
+           return s;
          }),
-         "V"_a, "F"_a, "precision"_a = "double", doc::init)
-    .def_property_readonly("num_vertices", [](const Geodesic_solver& s) { return s.solver->number_of_vertices(); },
-                           doc::num_vertices)
-    .def_property_readonly("num_faces", [](const Geodesic_solver& s) { return s.solver->number_of_faces(); },
+         "V"_a, "F"_a, "precision"_a = "double", py::kw_only(), "repair"_a = false, doc::init)
+    .def_property_readonly("num_vertices", &Geodesic_solver::vertices, doc::num_vertices)
+    .def_property_readonly("num_faces", [](const Geodesic_solver& s) { return s.solver->number_of_triangles(); },
                            doc::num_faces)
     .def_readonly("precision", &Geodesic_solver::precision, doc::precision)
     .def_property_readonly("repairs", [](const Geodesic_solver& s) { return s.solver->repairs(); }, doc::repairs)
     .def(
       "distances",
-      [](const Geodesic_solver& s, const py::object& sources, const py::object& points, double epsilon,
-         double max_distance, long threads, bool return_labels) -> py::object {
-        const Query q = s.query(sources, points, epsilon, max_distance, threads);
-        const py::ssize_t n = py::ssize_t(s.solver->number_of_vertices());
+      [](const Geodesic_solver& s, const Vertices& sources, const Points& points, const Face_points& face_points,
+         double epsilon, double max_distance, long threads, bool return_labels) -> Field {
+        Query q = s.query(epsilon, max_distance, threads);
+        const Named_places named = s.sources(sources, points, face_points);
+        q.sources = named.places;
+        const py::ssize_t n = py::ssize_t(s.vertices());
         py::array_t<double> d(n);
         py::array_t<std::int64_t> labels(return_labels ? n : 0);
         double* out = d.mutable_data();
         long long* out_labels = return_labels ? reinterpret_cast<long long*>(labels.mutable_data()) : nullptr;
+        std::vector<dggvtp::Moved_point> moved;
+        std::size_t unreachable = 0;
         {
           py::gil_scoped_release unlocked;
-          s.solver->distances(q, out, out_labels);
+          s.solver->distances(q, out, out_labels, moved);
+          unreachable = dggvtp::count_infinite(out, out + n);
         }
+        const Named_places* ranges[3] = {&named, nullptr, nullptr};
+        warn_moved(moved, ranges);
+        warn_unreachable(unreachable, std::size_t(n), "vertices", max_distance);
         if(return_labels)
-          return py::make_tuple(d, labels);
-        return std::move(d);
+          return {py::make_tuple(d, labels)};
+        return {std::move(d)};
       },
-      "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "epsilon"_a = 0., "max_distance"_a = infinity,
-      "threads"_a = 1, "return_labels"_a = false, doc::distances)
+      "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
+      "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1, "return_labels"_a = false, doc::distances)
     .def(
       "distances_from_each",
-      [](const Geodesic_solver& s, const py::object& sources, double epsilon, double max_distance, long threads) {
-        Query q = s.query(sources, py::none(), epsilon, max_distance, threads, false);
-        const py::ssize_t n = py::ssize_t(s.solver->number_of_vertices());
-        py::array_t<double> rows({py::ssize_t(q.sources.size()), n});
+      [](const Geodesic_solver& s, const Vertices& sources, double epsilon, double max_distance, long threads) {
+        Query q = s.query(epsilon, max_distance, threads);
+        q.sources = vertex_places(sources, "source", s.vertices());
+        const std::size_t n = s.vertices();
+        py::array_t<double> rows({py::ssize_t(q.sources.size()), py::ssize_t(n)});
         double* out = rows.mutable_data();
+        dggvtp::Unreachable_rows unreachable;
         {
           py::gil_scoped_release unlocked;
           s.solver->distances_from_each(q, out);
+          for(std::size_t k = 0; k < q.sources.size(); ++k)
+            unreachable.add(out + k * n, out + (k + 1) * n);
         }
+        if(std::isinf(max_distance) && unreachable.rows > 0)
+          warn(dggvtp::unreachable_rows_warning(unreachable.rows, q.sources.size(), unreachable.most, n));
         return rows;
       },
       "sources"_a, py::kw_only(), "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1,
       doc::distances_from_each)
     .def(
-      "target_distances",
-      [](const Geodesic_solver& s, const py::object& sources, const py::object& points, const py::object& targets,
-         const py::object& target_points, double epsilon, double max_distance, long threads) {
-        Query q = s.query(sources, points, epsilon, max_distance, threads);
-        q.targets = vertex_places(targets, "target", s.solver->number_of_vertices());
-        for(const Place& p : point_places(target_points, "target_points"))
-          q.targets.push_back(p);
-        if(q.targets.empty())
-          bad("no target given (targets or target_points)");
-        std::vector<double> t;
+      "local_distance_matrix",
+      [](const Geodesic_solver& s, double max_distance, const Vertices& sources, double epsilon,
+         long threads) -> Sparse_matrix {
+        if(!(max_distance >= 0.) || std::isinf(max_distance))
+          bad("max_distance must be a finite number >= 0 (the matrix holds the distances up to it), not " +
+              number_text(max_distance) + ": distances_from_each() gives every distance");
+        Query q = s.query(epsilon, max_distance, threads);
+        q.sources = vertex_places(sources, "source", s.vertices());
+        if(!sources.object.is_none() && q.sources.empty())
+          bad("no source given: sources=None (the default) is every vertex");
+        std::vector<dggvtp::Sparse_row> rows(sources.object.is_none() ? s.vertices() : q.sources.size());
         {
           py::gil_scoped_release unlocked;
-          t = s.solver->target_distances(q);
+          s.solver->local_distance_matrix(q, [&rows](std::size_t k, dggvtp::Sparse_row&& row) { rows[k] = std::move(row); });
         }
-        return py::array_t<double>(py::ssize_t(t.size()), t.data());
+        const std::uint64_t int32_max = std::uint64_t(std::numeric_limits<std::int32_t>::max());
+        std::uint64_t nonzeros = 0;
+        for(const auto& r : rows)
+          nonzeros += r.columns.size();
+        if(nonzeros <= int32_max && s.vertices() <= int32_max)
+          return {csr_matrix<std::int32_t>(rows, s.vertices())};
+        return {csr_matrix<std::int64_t>(rows, s.vertices())};
       },
-      "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "targets"_a = py::none(),
-      "target_points"_a = py::none(), "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1,
-      doc::target_distances)
-    .def(
-      "shortest_path",
-      [](const Geodesic_solver& s, const py::object& sources, const py::object& points, const py::object& target,
-         const py::object& target_point, double epsilon, double max_distance, long threads) {
-        Query q = s.query(sources, points, epsilon, max_distance, threads);
-        if(target.is_none() == target_point.is_none())
-          bad("give one target: target (a vertex) or target_point (3 coordinates)");
-        q.path_targets = target.is_none() ? point_places(target_point, "target_point")
-                                          : vertex_places(target, "target", s.solver->number_of_vertices());
-        if(q.path_targets.size() != 1)
-          bad("give one target: target (a vertex) or target_point (3 coordinates)");
-        dggvtp::Polyline line;
-        {
-          py::gil_scoped_release unlocked;
-          line = s.solver->shortest_path(q);
-        }
-        py::array_t<double> path({py::ssize_t(line.size()), py::ssize_t(3)});
-        auto p = path.mutable_unchecked<2>();
-        for(std::size_t i = 0; i < line.size(); ++i)
-          for(int c = 0; c < 3; ++c)
-            p(i, c) = line[i][c];
-        return path;
-      },
-      "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "target"_a = py::none(),
-      "target_point"_a = py::none(), "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1,
-      doc::shortest_path)
+      "max_distance"_a, "sources"_a = py::none(), py::kw_only(), "epsilon"_a = 0., "threads"_a = 1,
+      doc::local_distance_matrix);
+  def_targets_query(
+    solver, "target_distances",
+    [](const Geodesic_solver& s, Query& q, const Named_places& named_sources, const Named_places& named_targets) {
+      q.sources = named_sources.places;
+      q.targets = named_targets.places;
+      std::vector<double> t;
+      std::vector<dggvtp::Moved_point> moved;
+      {
+        py::gil_scoped_release unlocked;
+        t = s.solver->target_distances(q, moved);
+      }
+      const Named_places* ranges[3] = {&named_sources, &named_targets, nullptr};
+      warn_moved(moved, ranges);
+      warn_unreachable(dggvtp::count_infinite(t), t.size(), "targets", q.max_distance);
+      return py::array_t<double>(py::ssize_t(t.size()), t.data());
+    },
+    doc::target_distances);
+  def_targets_query(
+    solver, "shortest_paths",
+    [](const Geodesic_solver& s, Query& q, const Named_places& sources, const Named_places& targets) {
+      return s.paths(q, sources, targets);
+    },
+    doc::shortest_paths);
+  solver.def(
+    "shortest_path",
+    [](const Geodesic_solver& s, const Vertices& sources, const Points& points, const Face_points& face_points,
+       const Vertices& target, const Points& target_point, const Face_points& target_face_point, double epsilon,
+       double max_distance, long threads) {
+      Query q = s.query(epsilon, max_distance, threads);
+      const Named_places t =
+        s.places(target, target_point, target_face_point, {"target", "target_point", "target_face_point", "target"});
+      if(t.places.size() != 1)
+        bad("give one target: target (a vertex), target_point (3 coordinates) or target_face_point ((face, "
+            "barycentric))");
+      return s.paths(q, s.sources(sources, points, face_points), t).first.front();
+    },
+    "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
+    "target"_a = py::none(), "target_point"_a = py::none(), "target_face_point"_a = py::none(), "epsilon"_a = 0.,
+    "max_distance"_a = infinity, "threads"_a = 1, doc::shortest_path)
     .def("__repr__", [](const Geodesic_solver& s) {
-      return "<dggvtp.GeodesicSolver: " + std::to_string(s.solver->number_of_vertices()) + " vertices, " +
-             std::to_string(s.solver->number_of_faces()) + " faces, " + s.precision + ">";
+      return "<dggvtp.GeodesicSolver: " + std::to_string(s.vertices()) + " vertices, " +
+             std::to_string(s.solver->number_of_triangles()) + " faces, " + s.precision + ">";
     });
 }

@@ -1,6 +1,9 @@
 """Shared by the tests: the bundled meshes, and dggvtp (the command-line program) to compare with.
 
-CTest sets DGGVTP_DATA (data/meshes) and DGGVTP_CLI (the dggvtp built with the module)."""
+The suite runs on the package wherever it is imported from (the build tree, PYTHONPATH=build/python,
+or an installed one). CTest sets DGGVTP_DATA (data/meshes), and DGGVTP_CLI and DGGVTP_BATCH (the
+programs built with the module): the tests that compare with them are marked needs_cli and skipped
+without them."""
 import os
 import pathlib
 import subprocess
@@ -11,13 +14,30 @@ import pytest
 DATA = pathlib.Path(os.environ.get("DGGVTP_DATA", pathlib.Path(__file__).resolve().parents[2] / "data" / "meshes"))
 CLI_DATA = pathlib.Path(__file__).resolve().parents[2] / "test" / "DGG_VTP_3_cli" / "data"  # repairs, polygons
 CLI = os.environ.get("DGGVTP_CLI")
+BATCH = os.environ.get("DGGVTP_BATCH")
 MESHES = sorted(p.name for p in DATA.glob("*.ply"))
 
 needs_cli = pytest.mark.skipif(not CLI or not os.path.exists(CLI), reason="dggvtp not built (DGGVTP_CLI)")
+needs_batch = pytest.mark.skipif(not BATCH or not os.path.exists(BATCH), reason="dggvtp-batch not built (DGGVTP_BATCH)")
 
 
 def mesh(name):
     return str(DATA / name)
+
+
+def same_bits(a, b):
+    a, b = np.asarray(a), np.asarray(b)
+    return a.dtype == b.dtype and a.shape == b.shape and a.tobytes() == b.tobytes()
+
+
+def grid(n, size=1.0):
+    """A flat (n + 1) x (n + 1) grid of the square [0, size]^2 in the plane z = 0, two triangles a
+    cell: geodesic distances there are Euclidean."""
+    x, y = np.meshgrid(np.linspace(0, size, n + 1), np.linspace(0, size, n + 1))
+    V = np.column_stack([x.ravel(), y.ravel(), np.zeros(x.size)])
+    i = np.arange(n * (n + 1)).reshape(n, n + 1)[:, :n].ravel()
+    F = np.concatenate([np.column_stack([i, i + 1, i + n + 2]), np.column_stack([i, i + n + 2, i + n + 1])])
+    return V, F
 
 
 def run_cli(tmp_path, mesh_path, *options, labels=False):

@@ -16,7 +16,7 @@ def solver():
 
 
 @pytest.mark.parametrize("V, F, message", [
-    (np.zeros((4, 2)), TETRA_F, r"V must have shape \(n, 3\)"),
+    (np.zeros((4, 4)), TETRA_F, r"V must have shape \(n, 3\), or \(n, 2\) for points of the plane z = 0"),
     (np.zeros(12), TETRA_F, r"V must have shape \(n, 3\)"),
     (TETRA_V, np.array(TETRA_F).T[:2], r"F must have shape \(n, 3\)"),
     ([["a", "b", "c"]], TETRA_F, "V must hold real numbers"),
@@ -25,7 +25,7 @@ def solver():
     (np.zeros((0, 3)), np.zeros((0, 3), dtype=int), "V has no vertices"),
     (TETRA_V, [[0, 1, 4]], "face 0 refers to vertex 4, but the mesh has 4 vertices"),
     (TETRA_V, [[0, 1, -1]], "face 0 refers to vertex -1"),
-    (TETRA_V, [[0, 1, 1]], "face 0 uses vertex 1 twice"),
+    (TETRA_V, [[0, 1, 1]], "face 0 uses vertex 1 twice; repair=True drops such faces"),
     ([[0, 0, 0], [1, math.nan, 0], [0, 1, 0]], [[0, 1, 2]], "vertex 1 has a coordinate that is not finite"),
     ([[0, 0, 0], [1, math.inf, 0], [0, 1, 0]], [[0, 1, 2]], "vertex 1 has a coordinate that is not finite"),
     # the library's input policy: a degenerate (flat) triangle
@@ -51,6 +51,16 @@ def test_bad_precision():
     (dict(sources=[]), "no source given"),
     (dict(points=[[0, math.nan, 0]]), "points needs finite coordinates"),
     (dict(points=[[0, 0]]), r"points must have shape \(k, 3\)"),
+    (dict(face_points=[0, 1, 2]), r"face_points must be a pair \(faces, barycentric\)"),
+    (dict(face_points="ab"), r"face_points must be a pair \(faces, barycentric\)"),
+    (dict(face_points=(4, [1, 0, 0])), r"face_points face 4 is out of range \(F has 4 faces\)"),
+    (dict(face_points=(-1, [1, 0, 0])), r"face_points face -1 is out of range"),
+    (dict(face_points=(0.5, [1, 0, 0])), "face_points face must hold integers"),
+    (dict(face_points=([0, 1], [1, 0, 0])), "face_points gives 2 faces and 1 rows of barycentric coordinates"),
+    (dict(face_points=(0, [1, 0])), r"face_points barycentric coordinates must have shape \(k, 3\)"),
+    (dict(face_points=(0, [1.5, -0.5, 0])), r"face_points barycentric coordinates must be finite and not negative \(row 0\)"),
+    (dict(face_points=(0, [0.5, 0.5, 0.5])), r"face_points barycentric coordinates must add up to 1 \(row 0 adds up to 1.5"),
+    (dict(face_points=(0, [math.nan, 0.5, 0.5])), "face_points barycentric coordinates must be finite"),
     (dict(sources=0, epsilon=-1e-3), r"the accuracy must be a number in \[0, 1\]"),
     (dict(sources=0, epsilon=math.nan), r"the accuracy must be a number in \[0, 1\]"),
     (dict(sources=0, epsilon=math.inf), r"the accuracy must be a number in \[0, 1\]"),
@@ -79,6 +89,29 @@ def test_bad_targets(solver):
         solver.shortest_path(0, target=[1, 2])
     with pytest.raises(ValueError, match=r"the accuracy must be a number in \[0, 1\]"):
         solver.distances_from_each([0, 1], epsilon=-1.0)
+
+
+def test_bad_local_distance_matrix(solver):
+    for bad in (-1.0, math.nan, math.inf):
+        with pytest.raises(ValueError, match="max_distance must be a finite number >= 0"):
+            solver.local_distance_matrix(bad)
+    with pytest.raises(ValueError, match="source 4 is out of range"):
+        solver.local_distance_matrix(1.0, [0, 4])
+    with pytest.raises(ValueError, match="no source given: sources=None .the default. is every vertex"):
+        solver.local_distance_matrix(1.0, [])
+    with pytest.raises(ValueError, match=r"the accuracy must be a number in \[0, 1\]"):
+        solver.local_distance_matrix(1.0, epsilon=2.0)
+    with pytest.raises(ValueError, match="threads must be >= 0"):
+        solver.local_distance_matrix(1.0, threads=-1)
+
+
+def test_bad_path_targets(solver):
+    with pytest.raises(ValueError, match="no target given .targets, target_points or target_face_points."):
+        solver.shortest_paths(0)
+    with pytest.raises(ValueError, match="give one target"):
+        solver.shortest_path(0, target_face_point=([0, 1], [[1, 0, 0], [0, 1, 0]]))
+    with pytest.raises(ValueError, match="target_face_point barycentric coordinates must add up to 1"):
+        solver.shortest_path(0, target_face_point=(0, [1, 1, 0]))
 
 
 def test_point_on_mesh_without_faces():

@@ -429,6 +429,53 @@ unreachable_warns)  # issue 30: rows with inf are counted in a warning, even wit
   run "$spot" --sources fps:2 --output s.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
   [ -z "$err" ] || fail "a warning on a connected mesh: $err"
   ;;
+local_distance_matrix)  # issue 36: --max-distance, a sparse .npz that scipy.sparse.load_npz reads
+  python=/usr/bin/python3
+  [ -x "$python" ] || python=python3
+  "$python" -c "import scipy.sparse" 2>/dev/null || skip "no Python with SciPy to read the .npz"
+  printf '5 100 2000 7\n' > s.txt
+  for dtype in float64 float32; do
+    run "$spot" --sources s.txt --max-distance 0.1 --dtype $dtype --output m.npz --threads 2 --quiet
+    [ "$rc" -eq 0 ] || fail "$err"
+    [ ! -e m.npz.checkpoint ] || fail "a checkpoint directory was left"
+    # each row, as dggvtp prints a field, is dggvtp --source N --max-distance 0.1 (in the dtype)
+    "$python" - m.npz $dtype 5 100 2000 7 <<'PY' || fail "m.npz ($dtype) is not a valid sparse .npz"
+import sys, zipfile
+import numpy as np, scipy.sparse
+path, dtype, sources = sys.argv[1], sys.argv[2], sys.argv[3:]
+assert zipfile.ZipFile(path).testzip() is None
+M = scipy.sparse.load_npz(path)
+assert isinstance(M, scipy.sparse.csr_matrix) and M.shape == (len(sources), 2930), M
+assert M.data.dtype == np.dtype(dtype) and M.indices.dtype == np.int32 and M.has_sorted_indices
+for k, s in enumerate(sources):
+    row = np.full(2930, np.inf)
+    row[M.indices[M.indptr[k]:M.indptr[k + 1]]] = M.data[M.indptr[k]:M.indptr[k + 1]]
+    with open(f"r{s}.txt", "w") as f:
+        f.write("".join("%.17g\n" % x for x in row))
+PY
+    for s in 5 100 2000 7; do
+      "$dggvtp" "$spot" --source $s --max-distance 0.1 --quiet --output d.npy || fail "dggvtp failed on source $s"
+      "$python" -c "import numpy as np, sys; d = np.load('d.npy').astype('$dtype').astype(float); print(''.join('%.17g\n' % x for x in d), end='')" > d$s.txt
+      cmp -s d$s.txt r$s.txt || fail "row of source $s ($dtype) differs from dggvtp --max-distance: $(diff d$s.txt r$s.txt | head -4)"
+    done
+  done
+  # what does not combine with it: usage errors, and no output
+  for args in "--output m.npy" "--output m.npz --checkpoint c" "--output m.npz --max-distance 0.2" \
+              "--output m.npz --sources fps:2"; do
+    rm -f m.npz
+    run "$spot" --sources s.txt --max-distance 0.1 $args; expect_usage_error
+    [ ! -e m.npz ] && [ ! -e c ] || fail "$args: an output was written"
+  done
+  for bad in -1 inf nan x; do
+    run "$spot" --sources all --max-distance $bad --output m.npz; expect_usage_error
+    [[ "$err" == *"--max-distance must be a finite number >= 0"* || "$err" == *"invalid value"* ]] || fail "$bad: $err"
+  done
+  if [ "$mpiexec" != none ] && command -v "$mpiexec" >/dev/null 2>&1; then
+    mpi 2 "$spot" --sources all --max-distance 0.1 --output m.npz >/dev/null 2>"$work/.stderr"; rc=$?
+    err=$(cat "$work/.stderr")
+    [ "$rc" -eq 1 ] && [[ "$err" == *"--max-distance runs in one process"* ]] || fail "under mpirun -np 2: $rc $err"
+  fi
+  ;;
 *)
   fail "unknown case"
   ;;

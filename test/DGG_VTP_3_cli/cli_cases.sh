@@ -253,7 +253,8 @@ case $case in
   unsupported_format) run "$data/not_a_mesh.xyz" --output "$work/d.txt"; expect_input_error ;;
   nan_coordinate) run "$data/nan_coordinate.off" --output "$work/d.txt"; expect_input_error ;;
   zero_area_face) run "$data/zero_area_face.off" --output "$work/d.txt"; expect_input_error ;;
-  face_repeating_a_vertex) run "$data/face_repeating_a_vertex.off" --output "$work/d.txt"; expect_input_error ;;
+  face_repeating_a_vertex) run "$data/face_repeating_a_vertex.off" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *"uses vertex 1 twice; --repair drops such faces" ]] || fail "the error does not mention --repair: $err" ;;
   error_keeps_existing_output)
     echo keep > "$work/kept.txt"
     run "$spot" --source 99999 --output "$work/kept.txt"; expect_rc 2
@@ -1065,6 +1066,17 @@ TABLE
     [[ "$err" == *"is a sliver"*"; --repair removes such faces" ]] || fail "$err"
     run "$data/needle_tube.obj" --repair --output "$work/d.txt"; expect_input_error
     [[ "$err" == *"is a sliver"*"(after --repair)" ]] || fail "$err" ;;
+  repair_drops_faces_with_a_repeated_corner)  # issue 36: the loader refused them before any repair
+    # the square 0 1 2 3, and a face 0 2 2 (an edge of it) that the loader refuses without --repair
+    printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 2\n3 0 2 3\n' | input r.off
+    run "$work/r.off" --output "$work/d.txt"; expect_input_error
+    [[ "$err" == *"face 1 uses vertex 2 twice; --repair drops such faces" ]] || fail "$err"
+    for format in d.txt d.ply; do
+      run "$work/r.off" --repair --output "$work/$format" --isolines 2 --isolines-output "$work/i.obj"; expect_rc 0
+      printf '%s\n' "$err" | grep -q "^warning: .*r.off: --repair: dropped 1 faces with a repeated corner$" ||
+        fail "no warning for the dropped face: $err"
+    done
+    expect_lines "$work/d.txt" 0 1 1.4142135623730951 1 ;;
   repair_stitches_duplicated_vertices)  # issue 30: a seam of coincident vertices cuts the square in two
     # 4 and 5 repeat the places of 0 and 2: the two triangles share no edge
     printf 'OFF\n6 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 0\n1 1 0\n3 0 1 2\n3 4 5 3\n' | input s.off

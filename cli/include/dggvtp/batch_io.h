@@ -34,6 +34,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <string>
 #include <thread>
@@ -424,23 +425,27 @@ inline void read_records(const std::string& directory, std::vector<unsigned char
   }
 }
 
-// Writes `bytes` into `path` atomically: a temporary file beside it, flushed to the device, then
-// renamed over it (and the directory flushed, so that the rename survives a crash).
-inline void write_file_atomically(const std::string& path, const std::string& bytes)
+// Writes into `path` atomically the bytes that `produce` hands, in pieces, to the function it is
+// given: a temporary file beside it, flushed to the device, then renamed over it (and the
+// directory flushed, so that the rename survives a crash).
+inline void write_file_atomically(const std::string& path,
+                                  const std::function<void(const std::function<void(const char*, std::size_t)>&)>& produce)
 {
   std::string temporary = path + ".tmp-XXXXXX";
   const int fd = ::mkstemp(&temporary[0]);
   if(fd < 0)
     throw Input_error("cannot write '" + path + "': " + system_error_text(errno));
   bool ok = true;
-  for(std::size_t done = 0; ok && done < bytes.size();)
-  {
-    const ssize_t written = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if(written < 0 && errno == EINTR)
-      continue;
-    ok = written > 0;
-    done += ok ? std::size_t(written) : 0;
-  }
+  produce([&](const char* bytes, std::size_t size) {
+    for(std::size_t done = 0; ok && done < size;)
+    {
+      const ssize_t written = ::write(fd, bytes + done, size - done);
+      if(written < 0 && errno == EINTR)
+        continue;
+      ok = written > 0;
+      done += ok ? std::size_t(written) : 0;
+    }
+  });
   const mode_t mask = ::umask(0);
   ::umask(mask);
   ok = ok && ::fchmod(fd, 0666 & ~mask) == 0 && ::fsync(fd) == 0;
@@ -460,6 +465,13 @@ inline void write_file_atomically(const std::string& path, const std::string& by
     ::fsync(dir_fd);
     ::close(dir_fd);
   }
+}
+
+inline void write_file_atomically(const std::string& path, const std::string& bytes)
+{
+  write_file_atomically(path, [&](const std::function<void(const char*, std::size_t)>& write) {
+    write(bytes.data(), bytes.size());
+  });
 }
 
 } // namespace dggvtp

@@ -34,16 +34,17 @@ inline std::string output_format_of(const std::string& path, const std::string& 
 }
 
 // The mesh of a file, as the fields are written on it: its points in the file's order, and its
-// faces as read (polygons are kept, orientations are the file's).
+// faces as read (polygons are kept, orientations are the file's; with `repair` on, without the
+// faces that repeat a vertex, as loading leaves them out).
 struct File_mesh
 {
   std::vector<std::array<double, 3>> points;
   std::vector<std::vector<std::uint32_t>> faces;
 };
 
-inline File_mesh read_file_mesh(const std::string& path)
+inline File_mesh read_file_mesh(const std::string& path, const Repair_option& repair)
 {
-  Loaded_soup soup = load_soup(path);
+  Loaded_soup soup = load_soup(path, repair);
   File_mesh mesh;
   mesh.points.reserve(soup.file_vertices);
   for(std::size_t i = 0; i < soup.file_vertices; ++i)

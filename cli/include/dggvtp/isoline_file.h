@@ -43,14 +43,14 @@ inline std::vector<double> evenly_spaced_values(const std::vector<double>& dista
 // `values` as OBJ: per value a comment, then per piece its points as v lines and one l line
 // through them; a closed piece repeats its first vertex at the end of its l line. The field is
 // interpolated on the triangles the solver gets (polygons triangulated, orientations fixed, and
-// with `repair` the repairs of --repair); a vertex split there takes the distance of its file vertex.
-inline void write_isolines_obj(std::FILE* file, const std::string& mesh_path, bool repair,
+// with `repair` on the repairs of --repair); a vertex split there takes the distance of its file vertex.
+inline void write_isolines_obj(std::FILE* file, const std::string& mesh_path, const Repair_option& repair,
                                const std::vector<double>& distances, const std::vector<double>& values)
 {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  Loaded_soup soup = load_soup(mesh_path);
-  if(repair)
-    repair_soup(soup);
+  Loaded_soup soup = load_soup(mesh_path, repair);
+  if(repair.on)
+    repair_soup(soup, repair);
   auto mesh = make_triangle_mesh<Kernel>(soup);
   using Mesh = decltype(mesh);
   if(num_vertices(mesh) != soup.file_vertex_of.size())

@@ -23,15 +23,20 @@ enum class Npy_dtype { float32, float64 };
 
 inline std::size_t npy_item_size(Npy_dtype dtype) { return dtype == Npy_dtype::float32 ? 4 : 8; }
 
+// NumPy's mark of the byte order of this machine, that of the values written: '<' or '>'
+inline char npy_byte_order()
+{
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+  return '>';
+#else
+  return '<';
+#endif
+}
+
 // NumPy's name of the type: '<f4', '<f8' (or '>' on a big-endian machine)
 inline std::string npy_descr(Npy_dtype dtype)
 {
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
-  const char order = '>';
-#else
-  const char order = '<';
-#endif
-  return std::string(1, order) + (dtype == Npy_dtype::float32 ? "f4" : "f8");
+  return std::string(1, npy_byte_order()) + (dtype == Npy_dtype::float32 ? "f4" : "f8");
 }
 
 // The bytes before the data of a rows x columns array: the magic string, the version (1.0), the

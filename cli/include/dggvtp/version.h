@@ -3,25 +3,21 @@
 //
 // Author(s): DGG-VTP for CGAL team
 
-// What --version prints: the package's version (the CMake project's, given as DGGVTP_VERSION by
-// the build) and the version of CGAL it was built with.
+// What --version prints: the package's version and the version of CGAL it was built with.
 
 #ifndef DGGVTP_VERSION_H
 #define DGGVTP_VERSION_H
 
+#include <CGAL/DGG_VTP_3/version.h>
 #include <CGAL/version.h>
 
 #include <string>
-
-#ifndef DGGVTP_VERSION
-#error "DGGVTP_VERSION must be defined by the build (cli/CMakeLists.txt)"
-#endif
 
 namespace dggvtp {
 
 inline std::string version_text(const std::string& program)
 {
-  return program + " " DGGVTP_VERSION " (DGG-VTP for CGAL), CGAL " CGAL_VERSION_STR "\n";
+  return program + " " DGG_VTP_3_VERSION_STR " (DGG-VTP for CGAL), CGAL " CGAL_VERSION_STR "\n";
 }
 
 } // namespace dggvtp

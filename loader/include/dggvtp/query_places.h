@@ -3,9 +3,10 @@
 //
 // Author(s): DGG-VTP for CGAL team
 
-// Sources, targets and path targets given as vertices of a mesh file or as 3D points, in the
-// numbering of a soup solver made by make_solver(), and the results back per file vertex: shared
-// by dggvtp and the Python module.
+// Sources, targets and path targets given as vertices of a mesh file, as 3D points or as points
+// on its triangles, in the numbering of a soup solver made by make_solver(), and the results back
+// per file vertex (fields, paths, the warnings about what is unreachable): shared by dggvtp,
+// dggvtp-batch and the Python module.
 
 #ifndef DGGVTP_QUERY_PLACES_H
 #define DGGVTP_QUERY_PLACES_H
@@ -20,12 +21,15 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -36,16 +40,31 @@ using Point_3 = Loaded_soup::Point;
 using Triangle = std::array<std::uint32_t, 3>;
 using Polyline = std::vector<std::array<double, 3>>;
 
-// A vertex of the file or a 3D point, as dggvtp's --source, --target and --path-to give them
+// A vertex of the file, a 3D point (as dggvtp's --source, --target and --path-to give them) or a
+// point on a triangle of the soup (as the Python module's face_points give them)
 struct Place
 {
-  bool is_point = false;
-  std::size_t vertex = 0;       // 0-based, in the file's order
-  std::array<double, 3> point{}; // located at the nearest point of the surface
+  bool is_point = false;               // a 3D point: `point`
+  bool is_face_point = false;          // a point on a triangle: `triangle`, `barycentric`
+  std::size_t vertex = 0;              // 0-based, in the file's order
+  std::array<double, 3> point{};       // located at the nearest point of the surface
+  std::size_t triangle = 0;            // in soup.triangles, with
+  std::array<double, 3> barycentric{}; // the coordinates of its corners, in the triangle's order
 };
 
-// whether a query's places (sources, targets, path targets) need points located
+// whether a query's places (sources, targets, path targets) include points, of either kind: the
+// places are then the solver's Face_locations
 inline bool has_points(std::initializer_list<const std::vector<Place>*> places)
+{
+  for(const std::vector<Place>* range : places)
+    for(const Place& p : *range)
+      if(p.is_point || p.is_face_point)
+        return true;
+  return false;
+}
+
+// whether they include 3D points, which a Point_locator locates
+inline bool needs_locator(std::initializer_list<const std::vector<Place>*> places)
 {
   for(const std::vector<Place>* range : places)
     for(const Place& p : *range)
@@ -126,6 +145,20 @@ private:
   Tree m_tree;
 };
 
+// The ranges of places of a query: dggvtp's --source, --target and --path-to options
+enum class Place_range { source, target, path_target };
+
+// A point taken at the nearest point of the surface farther than 1e-6 times the diagonal of the
+// mesh's bounding box from where it was given (users are told: a point off the surface may be a
+// mistake)
+struct Moved_point
+{
+  Place_range range;
+  std::size_t place; // its number in its range
+  std::array<double, 3> point;
+  double distance;   // how far it was moved
+};
+
 // The places of a query (sources, targets, path targets) in the solver's numbering, as ranges of
 // Element: solver vertices, or the solver's Face_locations when a point is given (a range holds one type; a vertex is then the
 // corner of one of its triangles, the same source or target bit for bit). A vertex of the file is
@@ -147,19 +180,11 @@ struct Query_places
   std::vector<std::pair<std::size_t, std::size_t>> isolated_sources;
   std::vector<Element> targets;           // the query's: those of --target, then of --path-to
   std::vector<Target> target_places, path_places; // per option
-  // a point taken at the nearest point of the surface farther than 1e-6 times the diagonal of the
-  // mesh's bounding box from where it was given (users are told: a point off the surface may be a mistake)
-  struct Moved_point
-  {
-    const char* option; // --source-point, --target-point or --path-to-point
-    std::array<double, 3> point;
-    double distance;    // how far it was moved
-  };
   std::vector<Moved_point> moved_points;
 };
 
-// Locates the points with `locator` (needed when Element is a Face_location), on the soup's
-// triangles, so before they are released.
+// Locates the points with `locator` (needed when Element is a Face_location and a 3D point is
+// given), on the soup's triangles, so before they are released.
 template <class Solver, class Element>
 Query_places<Solver, Element> query_places(const Loaded_soup& soup, const Point_locator* locator,
                                             const std::vector<Place>& sources, const std::vector<Place>& targets,
@@ -192,23 +217,29 @@ Query_places<Solver, Element> query_places(const Loaded_soup& soup, const Point_
       range.push_back(v);
     return true;
   };
-  const auto add_point = [&](const Place& p, const char* option, std::vector<Element>& range) {
+  const auto add_point = [&](const Place& p, Place_range kind, std::size_t place, std::vector<Element>& range) {
     if constexpr(by_location)
     {
+      if(p.is_face_point)
+      {
+        const auto& b = p.barycentric;
+        range.emplace_back(p.triangle, std::array<FT, 3>{FT(b[0]), FT(b[1]), FT(b[2])});
+        return;
+      }
       const auto l = locator->locate(p.point);
       range.emplace_back(l.first, std::array<FT, 3>{FT(l.second[0]), FT(l.second[1]), FT(l.second[2])});
       const double moved = locator->distance(p.point, l);
       if(moved > 1e-6 * locator->diagonal())
-        q.moved_points.push_back(typename Places::Moved_point{option, p.point, moved});
+        q.moved_points.push_back(Moved_point{kind, place, p.point, moved});
     }
   };
 
   for(std::size_t option = 0; option < sources.size(); ++option)
   {
     const Place& p = sources[option];
-    if(p.is_point)
+    if(p.is_point || p.is_face_point)
     {
-      add_point(p, "--source-point", q.sources);
+      add_point(p, Place_range::source, option, q.sources);
       q.source_option.push_back(option);
     }
     else
@@ -222,13 +253,14 @@ Query_places<Solver, Element> query_places(const Loaded_soup& soup, const Point_
   }
   for(const auto& [places, out] : {std::make_pair(&targets, &q.target_places),
                                    std::make_pair(&path_targets, &q.path_places)})
-    for(const Place& p : *places)
+    for(std::size_t k = 0; k < places->size(); ++k)
     {
+      const Place& p = (*places)[k];
       typename Places::Target t;
-      if(p.is_point)
+      if(p.is_point || p.is_face_point)
       {
         t.point = q.targets.size();
-        add_point(p, places == &targets ? "--target-point" : "--path-to-point", q.targets);
+        add_point(p, places == &targets ? Place_range::target : Place_range::path_target, k, q.targets);
       }
       else
       {
@@ -313,6 +345,86 @@ std::pair<Polyline, double> polyline_of(const std::vector<Path_point>& path, con
     line.push_back(x);
   }
   return {std::move(line), length};
+}
+
+// The shortest paths of the path targets of `q` in `tree` (`d`: its distances per solver vertex),
+// each as a polyline over the soup's points and triangles, from the target to its nearest source,
+// with its length (+infinity for no path: unreached)
+template <class Tree, class Places, class FT>
+std::vector<std::pair<Polyline, double>> trace_paths(const Tree& tree, const Places& q, const std::vector<FT>& d,
+                                                     const std::vector<Point_3>& points,
+                                                     const std::vector<Triangle>& triangles)
+{
+  std::vector<std::pair<Polyline, double>> out;
+  for(const auto& t : q.path_places)
+  {
+    std::vector<typename Tree::Path_point> path;
+    if(t.vertices.empty())
+      tree.shortest_path_to_target(t.point, std::back_inserter(path));
+    else
+      tree.shortest_path(nearest_copy(t.vertices, d), std::back_inserter(path));
+    out.push_back(polyline_of(path, points, triangles));
+  }
+  return out;
+}
+
+// how many of the values in [first, last) are +infinity
+template <class Iterator>
+std::size_t count_infinite(Iterator first, Iterator last)
+{
+  std::size_t n = 0;
+  for(; first != last; ++first)
+    n += std::isinf(*first) ? 1 : 0;
+  return n;
+}
+
+template <class Range>
+std::size_t count_infinite(const Range& values)
+{
+  return count_infinite(std::begin(values), std::end(values));
+}
+
+// The rows (fields of one source each) that leave vertices unreachable (inf), counted as they are
+// computed, from any thread, for one warning (unreachable_rows_warning())
+struct Unreachable_rows
+{
+  std::atomic<std::size_t> rows{0}; // rows with an inf
+  std::atomic<std::size_t> most{0}; // the most infs in one row
+
+  template <class Iterator>
+  void add(Iterator first, Iterator last)
+  {
+    const std::size_t n = count_infinite(first, last);
+    if(n == 0)
+      return;
+    ++rows;
+    for(std::size_t m = most.load(); m < n && !most.compare_exchange_weak(m, n);)
+    {
+    }
+  }
+};
+
+// The warning for `unreachable` of `total` `what` ("vertices", "targets and paths") that no path on
+// the surface reaches from the sources; empty when there is none. Beyond a maximum distance they
+// are unreached by request: no warning then (the callers' business).
+inline std::string unreachable_warning(std::size_t unreachable, std::size_t total, const std::string& what)
+{
+  if(unreachable == 0)
+    return std::string();
+  return std::to_string(unreachable) + " of " + std::to_string(total) + " " + what +
+         " are unreachable from the sources (inf): in other connected components than the sources', or used by no face";
+}
+
+// The same for `rows` of `computed` fields of one source each (dggvtp-batch's rows), `most` being
+// the most unreachable vertices of one row, of `vertices`
+inline std::string unreachable_rows_warning(std::size_t rows, std::size_t computed, std::size_t most,
+                                            std::size_t vertices)
+{
+  if(rows == 0)
+    return std::string();
+  return std::to_string(rows) + " of the " + std::to_string(computed) +
+         " rows computed leave vertices unreachable (inf), up to " + std::to_string(most) + " of " +
+         std::to_string(vertices) + " in a row: in other connected components than the row's source, or used by no face";
 }
 
 } // namespace dggvtp

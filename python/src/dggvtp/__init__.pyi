@@ -1,0 +1,24 @@
+# Type information of the package dggvtp (PEP 561, with py.typed): what __init__.py exports.
+from typing import Literal, Tuple, overload
+
+import numpy.typing as npt
+
+from ._dggvtp import _FacePoints, _Points, _Vertices, _Distances, _Labels
+from ._dggvtp import GeodesicSolver as GeodesicSolver
+from ._dggvtp import InputError as InputError
+from ._dggvtp import __version__ as __version__
+from ._dggvtp import read_mesh as read_mesh
+
+__all__ = ["GeodesicSolver", "InputError", "geodesic_distances", "read_mesh", "__version__"]
+
+@overload
+def geodesic_distances(V: npt.ArrayLike, F: npt.ArrayLike, sources: _Vertices = None, *,
+                       precision: Literal["double", "float"] = "double", repair: bool = False,
+                       points: _Points = None, face_points: _FacePoints = None, epsilon: float = 0.0,
+                       max_distance: float = ..., threads: int = 1, return_labels: Literal[False] = False) -> _Distances: ...
+@overload
+def geodesic_distances(V: npt.ArrayLike, F: npt.ArrayLike, sources: _Vertices = None, *,
+                       precision: Literal["double", "float"] = "double", repair: bool = False,
+                       points: _Points = None, face_points: _FacePoints = None, epsilon: float = 0.0,
+                       max_distance: float = ..., threads: int = 1,
+                       return_labels: Literal[True]) -> Tuple[_Distances, _Labels]: ...

@@ -1,0 +1,56 @@
+# Type information of the extension module dggvtp._dggvtp (PEP 561, with py.typed): its
+# signatures as help() shows them, and the documentation there.
+import os
+from typing import List, Literal, Optional, Tuple, Union, overload
+
+import numpy as np
+import numpy.typing as npt
+import scipy.sparse
+
+__version__: str
+
+_Vertices = Union[int, npt.ArrayLike, None]
+_Points = Optional[npt.ArrayLike]
+_FacePoints = Optional[Tuple[npt.ArrayLike, npt.ArrayLike]]
+_Distances = npt.NDArray[np.float64]
+_Labels = npt.NDArray[np.int64]
+
+class InputError(ValueError): ...
+
+def read_mesh(path: Union[str, os.PathLike[str]], *,
+              repair: bool = False) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
+
+class GeodesicSolver:
+    def __init__(self, V: npt.ArrayLike, F: npt.ArrayLike, precision: Literal["double", "float"] = "double", *,
+                 repair: bool = False) -> None: ...
+    @property
+    def num_vertices(self) -> int: ...
+    @property
+    def num_faces(self) -> int: ...
+    @property
+    def precision(self) -> str: ...
+    @property
+    def repairs(self) -> List[str]: ...
+    @overload
+    def distances(self, sources: _Vertices = None, *, points: _Points = None, face_points: _FacePoints = None,
+                  epsilon: float = 0.0, max_distance: float = ..., threads: int = 1,
+                  return_labels: Literal[False] = False) -> _Distances: ...
+    @overload
+    def distances(self, sources: _Vertices = None, *, points: _Points = None, face_points: _FacePoints = None,
+                  epsilon: float = 0.0, max_distance: float = ..., threads: int = 1,
+                  return_labels: Literal[True]) -> Tuple[_Distances, _Labels]: ...
+    def distances_from_each(self, sources: _Vertices, *, epsilon: float = 0.0, max_distance: float = ...,
+                            threads: int = 1) -> _Distances: ...
+    def local_distance_matrix(self, max_distance: float, sources: _Vertices = None, *, epsilon: float = 0.0,
+                              threads: int = 1) -> scipy.sparse.csr_matrix: ...
+    def target_distances(self, sources: _Vertices = None, *, points: _Points = None, face_points: _FacePoints = None,
+                         targets: _Vertices = None, target_points: _Points = None,
+                         target_face_points: _FacePoints = None, epsilon: float = 0.0, max_distance: float = ...,
+                         threads: int = 1) -> _Distances: ...
+    def shortest_paths(self, sources: _Vertices = None, *, points: _Points = None, face_points: _FacePoints = None,
+                       targets: _Vertices = None, target_points: _Points = None,
+                       target_face_points: _FacePoints = None, epsilon: float = 0.0, max_distance: float = ...,
+                       threads: int = 1) -> Tuple[List[_Distances], _Distances]: ...
+    def shortest_path(self, sources: _Vertices = None, *, points: _Points = None, face_points: _FacePoints = None,
+                      target: _Vertices = None, target_point: _Points = None, target_face_point: _FacePoints = None,
+                      epsilon: float = 0.0, max_distance: float = ..., threads: int = 1) -> _Distances: ...
