@@ -52,7 +52,7 @@ FT distance_bound(const Vec2<FT>& source, FT b0, FT b1, FT relay_left, FT relay_
 {
   using Math = Number_type_math<FT>;
   const FT inf = Math::infinity();
-  if(keys.is_exact() || !(relay_left > FT(0) || relay_right > FT(0)))
+  if(!keys.stops() || !(relay_left > FT(0) || relay_right > FT(0)))
     return inf;
   const FT zero = number<FT>(0), one = number<FT>(1), two = number<FT>(2);
   const FT lambda = keys.lambda(), one_minus_lambda = keys.one_minus_lambda(), k = keys.k();

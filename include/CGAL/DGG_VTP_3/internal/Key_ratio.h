@@ -17,6 +17,8 @@
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 
+#include <cstddef>
+
 namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
@@ -24,19 +26,23 @@ namespace internal {
 // The key ratio rho of a propagation (Tuning::key_ratio): a pseudo-source at distance d sends its
 // windows out with the key d / rho, and a window of key sigma gives the distance rho sigma (see
 // Window and the manual's argument), and the constants of the distance bound derived from rho,
-// computed once. rho = 1 is the exact algorithm: keys are distances, bit for bit.
+// computed once, and whether windows stop at their distance bound on a mesh of this size
+// (Tuning::stops_pay). rho = 1 is the exact algorithm: keys are distances, bit for bit.
 template <class FT>
 class Key_ratio
 {
 public:
-  explicit Key_ratio(FT accuracy)
+  Key_ratio(FT accuracy, std::size_t number_of_vertices)
     : m_rho(Tuning<FT>::key_ratio(accuracy))
     , m_lambda(number<FT>(1) / m_rho)
     , m_one_minus_lambda((m_rho - number<FT>(1)) / m_rho) // without cancellation for a small epsilon
     , m_k(m_one_minus_lambda * (number<FT>(1) + m_lambda) / number<FT>(2))
+    , m_stops(m_rho > FT(1) && Tuning<FT>::stops_pay(accuracy, number_of_vertices))
   {}
 
   bool is_exact() const { return !(m_rho > FT(1)); }
+  // windows stop at their distance bound, and take CH-relay vertices for it
+  bool stops() const { return m_stops; }
   FT rho() const { return m_rho; }
   // the key of distance `d`
   FT key(FT d) const { return is_exact() ? d : d * m_lambda; }
@@ -50,6 +56,7 @@ public:
 
 private:
   FT m_rho, m_lambda, m_one_minus_lambda, m_k;
+  bool m_stops;
 };
 
 } // namespace internal

@@ -106,12 +106,12 @@ inline bool right_child(const Window<FT>& w, const Vec2<FT>& b, const Vec2<FT>& 
 
 // A child whose boundary ray grazes vertex `v`, at `distance` from the pseudo-source, takes it
 // as its CH-relay vertex on that side (paper, Algorithm 1, line 22): `relay` and `relay_vertex`
-// are the child's fields of that side. Only DGG-VTP has relays.
+// are the child's fields of that side. Only windows that may stop have relays.
 template <class FT>
 inline void take_relay(Window<FT>& child, FT& relay, std::uint32_t& relay_vertex, FT distance, std::uint32_t v,
                        const Key_ratio<FT>& keys)
 {
-  if(keys.is_exact())
+  if(!keys.stops())
     return;
   relay = distance;
   relay_vertex = v;

@@ -81,7 +81,7 @@ public:
     : m_mesh(mesh)
     , m_partition(partition)
     , m_scheduler(partition, mesh.number_of_vertices())
-    , m_keys(accuracy)
+    , m_keys(accuracy, mesh.number_of_vertices())
     , m_emission(mesh, m_keys)
     , m_vertices(mesh, m_keys)
     , m_in_region(mesh.number_of_faces(), 0)
