@@ -100,6 +100,11 @@ struct Geodesic_solver
   {
     if(threads < 0)
       bad("threads must be >= 0 (0: all cores)");
+    // the library would refuse them too, but in its own words (accuracy); here, the caller's
+    if(!(epsilon >= 0. && epsilon <= CGAL::DGG_VTP_3::maximal_accuracy))
+      bad("epsilon must be a number in [0, 1] (0: exact); got " + std::string(py::repr(py::float_(epsilon))));
+    if(!(max_distance >= 0.))
+      bad("max_distance must be a number >= 0 (inf: no limit); got " + std::string(py::repr(py::float_(max_distance))));
     Query q;
     q.epsilon = epsilon;
     q.max_distance = max_distance;

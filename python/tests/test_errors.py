@@ -61,12 +61,12 @@ def test_bad_precision():
     (dict(face_points=(0, [1.5, -0.5, 0])), r"face_points barycentric coordinates must be finite and not negative \(row 0\)"),
     (dict(face_points=(0, [0.5, 0.5, 0.5])), r"face_points barycentric coordinates must add up to 1 \(row 0 adds up to 1.5"),
     (dict(face_points=(0, [math.nan, 0.5, 0.5])), "face_points barycentric coordinates must be finite"),
-    (dict(sources=0, epsilon=-1e-3), r"the accuracy must be a number in \[0, 1\]"),
-    (dict(sources=0, epsilon=math.nan), r"the accuracy must be a number in \[0, 1\]"),
-    (dict(sources=0, epsilon=math.inf), r"the accuracy must be a number in \[0, 1\]"),
-    (dict(sources=0, epsilon=1.5), r"the accuracy must be a number in \[0, 1\]"),
-    (dict(sources=0, max_distance=-1.0), "the maximum distance must be a number >= 0"),
-    (dict(sources=0, max_distance=math.nan), "the maximum distance must be a number >= 0"),
+    (dict(sources=0, epsilon=-1e-3), r"epsilon must be a number in \[0, 1\] \(0: exact\); got -0.001$"),
+    (dict(sources=0, epsilon=math.nan), r"epsilon must be a number in \[0, 1\]"),
+    (dict(sources=0, epsilon=math.inf), r"epsilon must be a number in \[0, 1\]"),
+    (dict(sources=0, epsilon=1.5), r"epsilon must be a number in \[0, 1\] \(0: exact\); got 1.5$"),
+    (dict(sources=0, max_distance=-1.0), r"max_distance must be a number >= 0 \(inf: no limit\); got -1.0$"),
+    (dict(sources=0, max_distance=math.nan), "max_distance must be a number >= 0"),
     (dict(sources=0, threads=-2), "threads must be >= 0"),
 ])
 def test_bad_query(solver, kwargs, message):
@@ -87,7 +87,7 @@ def test_bad_targets(solver):
         solver.shortest_path(0, target=1, target_point=[0, 0, 0])
     with pytest.raises(ValueError, match="give one target"):
         solver.shortest_path(0, target=[1, 2])
-    with pytest.raises(ValueError, match=r"the accuracy must be a number in \[0, 1\]"):
+    with pytest.raises(ValueError, match=r"epsilon must be a number in \[0, 1\]"):
         solver.distances_from_each([0, 1], epsilon=-1.0)
 
 
@@ -99,7 +99,7 @@ def test_bad_local_distance_matrix(solver):
         solver.local_distance_matrix(1.0, [0, 4])
     with pytest.raises(ValueError, match="no source given: sources=None .the default. is every vertex"):
         solver.local_distance_matrix(1.0, [])
-    with pytest.raises(ValueError, match=r"the accuracy must be a number in \[0, 1\]"):
+    with pytest.raises(ValueError, match=r"epsilon must be a number in \[0, 1\]"):
         solver.local_distance_matrix(1.0, epsilon=2.0)
     with pytest.raises(ValueError, match="threads must be >= 0"):
         solver.local_distance_matrix(1.0, threads=-1)
