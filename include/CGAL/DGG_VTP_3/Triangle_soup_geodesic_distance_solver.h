@@ -49,9 +49,10 @@ namespace DGG_VTP_3 {
  *
  * The triangles must form a surface as they are: each edge shared by at most two triangles, which
  * go along it in opposite directions (`CGAL::Polygon_mesh_processing::orient_polygon_soup()`
- * makes a soup so, splitting vertices where needed). Vertices where several fans of triangles
- * meet are kept (see `number_of_non_manifold_vertices()`), and points no triangle uses are
- * unreachable.
+ * makes a soup so, splitting vertices where needed; given the copies it makes as `copy_of`, the
+ * sheets it splits apart stay one surface, an edge of three triangles included). Vertices where
+ * several fans of triangles meet are kept (see `number_of_non_manifold_vertices()`), and points no
+ * triangle uses are unreachable.
  *
  * \tparam GeomTraits a model of `DGGVTPTraits_3`; its `FT` is the number type of the results.
  */
