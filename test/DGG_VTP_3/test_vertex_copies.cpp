@@ -8,7 +8,11 @@
 // its edges. Distances against the exact ones by unfolding the hinged triangle onto a face of
 // the edge: paths cross the edge's interior into the other sheet, or bend at its ends; in both
 // directions, with the hinged triangle's orientation either way; DGG-VTP within [exact, exact (1 +
-// epsilon)]; paths as long as the distance, through the copies; copy_of's checks.
+// epsilon)]; a sphere and a real mesh cut into sheets, one of them turned, against the uncut
+// ones; point sources on a split edge; paths as long as the distance, through the copies;
+// copy_of's checks.
+
+#include "test_utilities.h"
 
 #include <CGAL/DGG_VTP_3/Triangle_soup_geodesic_distance_solver.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -240,6 +244,69 @@ BOOST_AUTO_TEST_CASE(sphere_cut_along_its_equator)
             BOOST_TEST(d[v] <= truth * (1 + (std::max)(epsilon, 1e-12)));
           }
       }
+    }
+  }
+}
+
+// The same on a real mesh cut along a wavy line into two sheets, one turned the other way: the
+// distances of the uncut mesh, within epsilon with DGG-VTP
+BOOST_AUTO_TEST_CASE(pinion_cut_into_two_sheets)
+{
+  const dggvtp_test::Soup soup = dggvtp_test::read_soup("pinion.ply");
+  std::vector<Point> points;
+  for(const auto& p : soup.points)
+    points.emplace_back(p[0], p[1], p[2]);
+  std::vector<Triangle> whole, cut;
+  std::vector<char> second;
+  for(const auto& f : soup.faces)
+  {
+    whole.push_back({f[0], f[1], f[2]});
+    const Point c = CGAL::centroid(points[f[0]], points[f[1]], points[f[2]]);
+    second.push_back(c.y() + 0.05 * std::sin(20 * c.z()) > 0);
+  }
+  const std::size_t original = points.size();
+  std::vector<char> in_first(original, 0);
+  for(std::size_t f = 0; f < whole.size(); ++f)
+    for(const std::size_t v : whole[f])
+      in_first[v] |= !second[f];
+  std::vector<std::size_t> copy_of(original), copy(original, 0);
+  std::iota(copy_of.begin(), copy_of.end(), std::size_t(0));
+  for(std::size_t f = 0; f < whole.size(); ++f)
+  {
+    Triangle t = whole[f];
+    if(second[f])
+    {
+      for(std::size_t& v : t)
+        if(in_first[v])
+        {
+          if(copy[v] == 0)
+          {
+            copy[v] = points.size();
+            points.push_back(points[v]);
+            copy_of.push_back(v);
+          }
+          v = copy[v];
+        }
+      std::swap(t[0], t[1]);
+    }
+    cut.push_back(t);
+  }
+  BOOST_TEST_REQUIRE(points.size() > original + 10);
+  const Solver uncut(std::vector<Point>(points.begin(), points.begin() + original), whole);
+  const Solver sheets(points, cut, DP::copy_of(copy_of));
+  for(std::size_t s = 0; s < points.size(); s += points.size() / 12)
+  {
+    const std::vector<double> exact = distances(uncut, original, copy_of[s], 0.);
+    for(const double epsilon : {0., 1e-1, 1e-3})
+    {
+      const std::vector<double> d = distances(sheets, points.size(), s, epsilon);
+      for(std::size_t v = 0; v < d.size(); ++v)
+        BOOST_TEST_CONTEXT("source " << s << ", vertex " << v << ", epsilon " << epsilon)
+        {
+          const double truth = exact[copy_of[v]];
+          BOOST_TEST(d[v] >= truth * (1 - 1e-12));
+          BOOST_TEST(d[v] <= truth * (1 + (std::max)(epsilon, 1e-12)));
+        }
     }
   }
 }
