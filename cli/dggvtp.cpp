@@ -144,10 +144,11 @@ on stderr giving the distance it was moved. Only one output may go to standard o
 summary then goes to standard error.
 
 Input policy: polygons are triangulated and inconsistent orientations are fixed, splitting
-vertices where needed; a vertex where separate fans of faces meet is kept, and paths may pass
-through it (a warning on stderr reports each of these); distances are still reported per vertex
-of the file, the smallest over the copies of a split vertex (a source or target vertex is one on
-all its copies). Vertices no face uses, and vertices of other
+vertices where needed (an edge of more than two faces); a vertex where separate fans of faces
+meet is kept, and paths may pass through it (a warning on stderr reports each of these). The
+copies of a split vertex are one point: paths go on from each and across a split edge into every
+sheet of it; distances are still reported per vertex of the file, the smallest over the copies
+of a split vertex (a source or target vertex is one on all its copies). Vertices no face uses, and vertices of other
 connected components than the sources', are unreachable: inf. An unreadable or empty file, a
 non-finite coordinate, a mesh too large for a double (its bounding box, or a face's squared
 edge lengths or area, overflow: scale it down), a face with fewer than 3 or repeated vertices

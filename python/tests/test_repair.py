@@ -114,6 +114,8 @@ def test_non_manifold_vertices_warn():
     with pytest.warns(RuntimeWarning, match=r"GeodesicSolver\(V, F\): split 4 non-manifold vertices"):
         solver = dggvtp.GeodesicSolver(V, [[0, 1, 2], [1, 0, 3], [0, 1, 4]])
     assert solver.repairs == ["split 4 non-manifold vertices"]
+    # the copies are one point: the other sheets are reached through the edge's ends
+    assert np.allclose(solver.distances(2), [1, np.sqrt(2), 0, 2, 2], rtol=1e-15)
 
 
 def test_point_far_from_the_surface_warns():

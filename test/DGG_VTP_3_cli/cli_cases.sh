@@ -561,10 +561,29 @@ case $case in
     printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n' | input e.off
     run "$work/e.off" --output "$work/d.txt"; expect_warning "non-manifold\|reoriented\|split"
     expect_lines "$work/d.txt" 0 1 1 1 1
-    # the three sheets are cut apart along the edge: from a vertex of one sheet, the vertices
-    # only the others hold are unreachable (said by the warning; paths do not cross the edge)
+    # the three sheets are split apart along the edge, and their copies of 0 and 1 are still one
+    # point: from a vertex of one sheet, the others are reached through them
     run "$work/e.off" --quiet --source 2 --output "$work/d.txt"; expect_rc 0
-    expect_lines "$work/d.txt" 1 1.4142135623730951 0 inf inf ;;
+    expect_lines "$work/d.txt" 1 1.4142135623730951 0 2 2 ;;
+  non_manifold_edge_crossed)  # the octahedron of the unit axes, a triangle hinged on its edge 0-2 (+x, +y)
+    # The hinged triangle's apex 6 is sqrt(1.5) from both ends, in the plane z = 0: from +z (4) and
+    # from -z (5), the shortest path crosses the edge's middle, 1 + sqrt(1.5) long (unfolded onto
+    # the face of 4 or 5). Either way round, the split puts the copies in one sheet or another.
+    for hinged in "0 2 6" "2 0 6"; do
+      { printf 'OFF\n7 9 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n'
+        printf '%.17g %.17g 0\n' "$(echo 'sqrt(0.5) + 0.5' | bc -l)" "$(echo 'sqrt(0.5) + 0.5' | bc -l)"
+        printf '3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n3 %s\n' "$hinged"; } | input h.off
+      run "$work/h.off" --source 4 --output "$work/d.txt"; expect_warning split
+      expect_lines "$work/d.txt" 1.4142135623730951 1.4142135623730951 1.4142135623730951 1.4142135623730951 0 \
+        2.4494897427831781 2.2247448713915890
+      run "$work/h.off" --quiet --source 6 --output "$work/d.txt"; expect_rc 0
+      awk 'NR == 1 || NR == 3 { if ($1 - 1.2247448713915890 > 1e-12 || $1 - 1.2247448713915890 < -1e-12) exit 1 }
+           NR == 5 || NR == 6 { if ($1 - 2.2247448713915890 > 1e-12 || $1 - 2.2247448713915890 < -1e-12) exit 1 }
+           NR == 7 { if ($1 != 0) exit 1 }' "$work/d.txt" || fail "from the apex ($hinged): $(cat "$work/d.txt")"
+      run "$work/h.off" --quiet --source 5 --epsilon 1e-2 --output "$work/d.txt"; expect_rc 0
+      expect_lines_within 1e-2 "$work/d.txt" 1.4142135623730951 1.4142135623730951 1.4142135623730951 \
+        1.4142135623730951 2.4494897427831781 0 2.2247448713915890
+    done ;;
   non_manifold_vertex_paths_pass)  # two fans meeting at 0: paths from one to the other go through it
     run "$data/non_manifold_vertex.off" --quiet --source 1 --output "$work/d.txt"; expect_rc 0
     expect_lines "$work/d.txt" 1 0 1.4142135623730951 2 2 ;;

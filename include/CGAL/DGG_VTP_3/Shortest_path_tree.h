@@ -42,7 +42,9 @@ namespace DGG_VTP_3 {
  * vertex in the exact mode, any vertex with DGG-VTP) and the direction the path arrives from.
  * A path is traced in time proportional to the number of faces it crosses; it is made of
  * straight legs (in the unfolding of the faces they cross) from pseudo-source to pseudo-source,
- * and its length is the distance reported for its target.
+ * and its length is the distance reported for its target. On a soup given copies of points
+ * (`copy_of`), a path that goes from one sheet to another through a copy has two points in a row
+ * at the copies, one in each sheet.
  *
  * It refers to the solver that computed it, which must outlive it; the mesh need not.
  */
@@ -226,6 +228,12 @@ private:
       const Index o = m_origin[v];
       if(o == no_origin() || (o >= m_distance.size() && leg_to(o, m_distance[v]).vertex == v))
         return; // v is the source
+      if(m_arrival[v].corner == Core::Mesh::no_halfedge) // from a copy of v, the same point (a step of length 0)
+      {
+        path.push_back(tracer.vertex_point(o, first_face(o)));
+        v = o;
+        continue;
+      }
       const Leg leg = leg_to(o, m_distance[v]);
       tracer.walk_from_vertex(m_arrival[v].corner, m_arrival[v].direction, leg.length, leg.vertex, leg.end, path);
       if(leg.is_source || leg.vertex == Tracer::no_vertex())

@@ -19,6 +19,7 @@
 #include <CGAL/DGG_VTP_3/parameters.h>
 #include <CGAL/DGG_VTP_3/internal/Element_numbering.h>
 #include <CGAL/DGG_VTP_3/internal/Solver_core.h>
+#include <CGAL/DGG_VTP_3/internal/Vertex_copies.h>
 #include <CGAL/DGG_VTP_3/internal/unfold_input.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -48,9 +49,10 @@ namespace DGG_VTP_3 {
  *
  * The triangles must form a surface as they are: each edge shared by at most two triangles, which
  * go along it in opposite directions (`CGAL::Polygon_mesh_processing::orient_polygon_soup()`
- * makes a soup so, splitting vertices where needed). Vertices where several fans of triangles
- * meet are kept (see `number_of_non_manifold_vertices()`), and points no triangle uses are
- * unreachable.
+ * makes a soup so, splitting vertices where needed; given the copies it makes as `copy_of`, the
+ * sheets it splits apart stay one surface, an edge of three triangles included). Vertices where
+ * several fans of triangles meet are kept (see `number_of_non_manifold_vertices()`), and points no
+ * triangle uses are unreachable.
  *
  * \tparam GeomTraits a model of `DGGVTPTraits_3`; its `FT` is the number type of the results.
  */
@@ -84,6 +86,12 @@ public:
    *                    and the traits' `Point_3` as value type}
    *     \cgalParamDefault{`CGAL::Identity_property_map`}
    *   \cgalParamNEnd
+   *   \cgalParamNBegin{copy_of}
+   *     \cgalParamDescription{the copies of each point (see `parameters::copy_of()`): a point split
+   *                           where sheets meet is still one point, reached from every sheet}
+   *     \cgalParamType{a random access range of integer indices into `points`, one per point}
+   *     \cgalParamDefault{no copies: every point is its own}
+   *   \cgalParamNEnd
    *   \cgalParamNBegin{geom_traits}
    *     \cgalParamDescription{an instance of a geometric traits class}
    *     \cgalParamType{a model of `DGGVTPTraits_3`}
@@ -93,8 +101,9 @@ public:
    *
    * \throws std::invalid_argument for what the constructor of `Geodesic_distance_solver` refuses,
    *         for a triangle that does not have 3 indices or refers to a point that does not exist,
-   *         and for two triangles that go along an edge in the same direction (inconsistent
-   *         orientations, or an edge of more than two triangles).
+   *         for two triangles that go along an edge in the same direction (inconsistent
+   *         orientations, or an edge of more than two triangles), and for `copy_of` not of one
+   *         index per point, or giving a copy at another place than its point.
    */
   template <class PointRange, class TriangleRange, class NamedParameters = parameters::Default_named_parameters>
   Triangle_soup_geodesic_distance_solver(const PointRange& points, const TriangleRange& triangles,
@@ -167,11 +176,21 @@ private:
   {
     using Point = typename std::iterator_traits<decltype(std::begin(points))>::value_type;
     typename Core::Mesh mesh;
-    const std::vector<std::uint32_t> order = internal::unfold_triangle_soup(
-      points, triangles,
-      parameters::choose_parameter<Identity_property_map<Point>>(parameters::get_parameter(np, internal_np::point_map)),
-      parameters::choose_parameter<GeomTraits>(parameters::get_parameter(np, internal_np::geom_traits)),
-      mesh);
+    const auto pm =
+      parameters::choose_parameter<Identity_property_map<Point>>(parameters::get_parameter(np, internal_np::point_map));
+    const auto gt = parameters::choose_parameter<GeomTraits>(parameters::get_parameter(np, internal_np::geom_traits));
+    const std::vector<std::uint32_t> order = internal::unfold_triangle_soup(points, triangles, pm, gt, mesh);
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::copy_of_t>::value)
+    {
+      const auto at = [&](std::size_t i) {
+        const auto& p = get(pm, *(std::begin(points) + i));
+        return std::array<typename GeomTraits::FT, 3>{
+          gt.compute_x_3_object()(p), gt.compute_y_3_object()(p), gt.compute_z_3_object()(p)};
+      };
+      internal::link_copies(
+        internal::copy_groups(parameters::get_parameter(np, internal_np::copy_of_t()), mesh.number_of_vertices(), at),
+        mesh);
+    }
     return Core(internal::Index_numbering(mesh.number_of_vertices(), mesh.number_of_faces()), std::move(mesh), order);
   }
 

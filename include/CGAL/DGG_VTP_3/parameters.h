@@ -35,6 +35,7 @@ struct max_distance_t {};
 struct targets_t {};
 struct target_distances_t {};
 struct nearest_source_map_t {};
+struct copy_of_t {};
 
 } // namespace internal_np
 
@@ -72,6 +73,13 @@ CGAL_DGG_VTP_3_NAMED_PARAMETER(target_distances)
 /// A writable vertex property map that receives, per vertex, the number of its nearest source in
 /// the range of sources (`std::size_t(-1)` where unreachable).
 CGAL_DGG_VTP_3_NAMED_PARAMETER(nearest_source_map)
+/// For `Triangle_soup_geodesic_distance_solver`: a random access range of point indices, one per
+/// point, point `i` being a copy of point `copy_of[i]` (itself if it is none) and of that one's
+/// copies. Copies are one point of the surface, split where sheets meet (as
+/// `CGAL::Polygon_mesh_processing::orient_polygon_soup()` splits an edge of more than two
+/// triangles and a vertex where fans meet): paths go from one copy to the others at no cost, and
+/// across an edge between copies into every sheet that has it.
+CGAL_DGG_VTP_3_NAMED_PARAMETER(copy_of)
 
 #undef CGAL_DGG_VTP_3_NAMED_PARAMETER
 

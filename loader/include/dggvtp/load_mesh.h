@@ -13,6 +13,7 @@
 #include <dggvtp/loaded_soup.h>
 #include <dggvtp/triangulate.h>
 
+#include <CGAL/DGG_VTP_3/parameters.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/io.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -231,15 +232,41 @@ inline void triangles_to_polygons(Loaded_soup& soup)
   std::vector<std::array<std::uint32_t, 3>>().swap(soup.triangles);
 }
 
-// A solver of the soup's triangles (a Triangle_soup_geodesic_distance_solver). Throws
-// std::invalid_argument as the solver does.
+namespace internal {
+
+// Per point of the soup, the point it is a copy of (the first point of its file vertex), itself if
+// none: the copies that repairs made where sheets meet are one point of the file, reached from
+// every sheet (the solver's copy_of). A copy that a repair moved elsewhere is a point of its own.
+inline std::vector<std::size_t> copies_of_points(const Loaded_soup& soup)
+{
+  std::vector<std::size_t> first(soup.file_vertices, std::size_t(-1)), copy_of(soup.file_vertex_of.size());
+  for(std::size_t i = 0; i < copy_of.size(); ++i)
+  {
+    std::size_t& f = first[soup.file_vertex_of[i]];
+    if(f == std::size_t(-1))
+      f = i;
+    copy_of[i] = soup.points[f] == soup.points[i] ? f : i;
+  }
+  return copy_of;
+}
+
+} // namespace internal
+
+// A solver of the soup's triangles (a Triangle_soup_geodesic_distance_solver), the copies of a
+// file vertex made by repairs given as one point (copy_of). Throws std::invalid_argument as the
+// solver does.
 template <class Solver>
 Solver make_soup_solver(const Loaded_soup& soup)
 {
   using Point = typename Solver::Traits::Point_3;
   using FT = typename Solver::Traits::FT;
+  const auto make = [&soup](const auto& points) {
+    if(soup.file_vertex_of.size() == soup.file_vertices)
+      return Solver(points, soup.triangles);
+    return Solver(points, soup.triangles, CGAL::DGG_VTP_3::parameters::copy_of(internal::copies_of_points(soup)));
+  };
   if constexpr(std::is_same<Point, Loaded_soup::Point>::value)
-    return Solver(soup.points, soup.triangles);
+    return make(soup.points);
   else
   {
     // Converted into an array first, not by a point map: GCC 12.2's vectorizer (-O2) drops the
@@ -249,7 +276,7 @@ Solver make_soup_solver(const Loaded_soup& soup)
     points.reserve(soup.points.size());
     for(const auto& p : soup.points)
       points.emplace_back(FT(p.x()), FT(p.y()), FT(p.z()));
-    return Solver(points, soup.triangles);
+    return make(points);
   }
 }
 

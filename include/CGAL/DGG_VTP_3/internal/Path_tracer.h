@@ -15,6 +15,7 @@
 #include <CGAL/license/DGG_VTP_3.h>
 
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Vertex_copies.h>
 #include <CGAL/DGG_VTP_3/internal/Vertex_directions.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
@@ -63,12 +64,12 @@ public:
   void walk_from_vertex(Index corner, const Point& direction, FT length, Index end_vertex, const Path_point& end_point,
                         std::vector<Path_point>& out) const
   {
-    walk(corner, Point{number<FT>(0), number<FT>(0)}, direction, length, true, end_vertex, end_point, out);
+    walk(corner, Point{number<FT>(0), number<FT>(0)}, direction, length, corner, true, end_vertex, end_point, out);
   }
   void walk_from_point(Index h, const Point& p, const Point& direction, FT length, Index end_vertex,
                        const Path_point& end_point, std::vector<Path_point>& out) const
   {
-    walk(h, p, direction, length, false, end_vertex, end_point, out);
+    walk(h, p, direction, length, Mesh::no_halfedge, false, end_vertex, end_point, out);
   }
   static Index no_vertex() { return Index(-1); }
 
@@ -124,12 +125,16 @@ private:
     return q;
   }
 
-  void walk(Index h, Point p, Point d, FT length, bool from_corner, Index end_vertex, const Path_point& end_point,
-            std::vector<Path_point>& out) const
+  // The walk from `p` in the face of `h`, entered through the edge of `entry` (none: from inside
+  // the face; `h` itself and `from_corner`: from its source, leaving through the opposite edge).
+  // Returns whether it ends where it should: at `end_vertex`, in a face of it, or in or beside
+  // the face of `end_point`. Across an edge of copies (see Vertex_copies.h) the leg goes on in
+  // the sheet where it does, the first if none.
+  bool walk(Index h, Point p, Point d, FT length, Index entry, bool from_corner, Index end_vertex,
+            const Path_point& end_point, std::vector<Path_point>& out) const
   {
     using Math = Number_type_math<FT>;
     d = Point{d.x / length_of(d), d.y / length_of(d)};
-    Index entry = from_corner ? h : Mesh::no_halfedge; // from a corner: leave through the opposite edge
     const FT tolerance = number<FT>(1024) * Math::machine_epsilon();
     for(std::size_t steps = 0; steps <= 3 * m_mesh.number_of_faces(); ++steps)
     {
@@ -176,7 +181,7 @@ private:
         const Index w = m_mesh.source(cw);
         out.push_back(corner_point(f, kw));
         if(w == end_vertex)
-          return;
+          return true;
         Point back{-d.x, -d.y}, at{q.x, q.y};
         change_frame(h, cw, at, back);
         const Point straight{number<FT>(1), number<FT>(0)};
@@ -200,19 +205,66 @@ private:
       x.barycentric[exit % 3] = number<FT>(1) - u;
       x.barycentric[(exit + 1) % 3] = u;
       out.push_back(x);
-      if(o == Mesh::no_halfedge)
+      if(!m_mesh.has_face_across(exit))
         break; // onto the border: only rounding puts a leg there
       // continue in the neighbour: the crossing and the direction in the frame of `exit`, then
-      // in the frame of its opposite halfedge (the same edge the other way, the face below)
+      // in the frame of its opposite halfedge (the same edge the other way, the face below), or of
+      // a twin along the same way (the face below is then its face mirrored)
       change_frame(h, exit, q, d);
       const FT len = m_mesh.length(exit);
-      p = Point{len - q.x, -q.y};
-      d = Point{-d.x, -d.y};
+      const auto across = [&](Index g, Point& pg, Point& dg) {
+        const bool mirrored = !same_point(m_mesh, m_mesh.source(g), m_mesh.target(exit));
+        pg = mirrored ? Point{q.x, -q.y} : Point{len - q.x, -q.y};
+        dg = mirrored ? Point{d.x, -d.y} : Point{-d.x, -d.y};
+      };
+      if(m_mesh.next_twin(exit) != exit)
+      {
+        std::vector<Path_point> first;
+        bool tried = false;
+        const auto try_sheet = [&](Index g) {
+          std::vector<Path_point> rest;
+          Point pg, dg;
+          across(g, pg, dg);
+          const bool arrived = walk(g, pg, dg, length, g, false, end_vertex, end_point, rest);
+          if(!tried)
+            first = rest;
+          tried = true;
+          if(arrived)
+            out.insert(out.end(), rest.begin(), rest.end());
+          return arrived;
+        };
+        if(o != Mesh::no_halfedge && try_sheet(o))
+          return true;
+        for(Index g = m_mesh.next_twin(exit); g != exit; g = m_mesh.next_twin(g))
+          if(g != o && try_sheet(g))
+            return true;
+        out.insert(out.end(), first.begin(), first.end());
+        return false;
+      }
+      across(o, p, d);
       h = o;
       entry = o;
       from_corner = false;
     }
     out.push_back(end_vertex != no_vertex() ? vertex_point(end_vertex, Mesh::face(h)) : end_point);
+    return ends_beside(Mesh::face(h), end_vertex, end_point);
+  }
+
+  // whether face `f` has `end_vertex` as a corner, or is the face of `end_point` or next to it
+  bool ends_beside(Index f, Index end_vertex, const Path_point& end_point) const
+  {
+    if(end_vertex != no_vertex())
+      return m_mesh.source(3 * f) == end_vertex || m_mesh.source(3 * f + 1) == end_vertex ||
+             m_mesh.source(3 * f + 2) == end_vertex;
+    for(Index e = 3 * end_point.face; e < 3 * end_point.face + 3; ++e)
+    {
+      if(m_mesh.opposite(e) != Mesh::no_halfedge && Mesh::face(m_mesh.opposite(e)) == f)
+        return true;
+      for(Index g = m_mesh.next_twin(e); g != e; g = m_mesh.next_twin(g))
+        if(Mesh::face(g) == f)
+          return true;
+    }
+    return f == end_point.face;
   }
 
   static FT length_of(const Point& v) { return internal::length(v); }

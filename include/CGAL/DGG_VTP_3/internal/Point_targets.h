@@ -60,14 +60,13 @@ public:
     {
       const Surface_point<FT>& q = points[t];
       entries.emplace_back(q.face, Entry{Index(t), q.barycentric, infinity(), Index(-1), Index(-1), Point{number<FT>(0), number<FT>(0)}});
+      std::vector<Surface_point<FT>> across;
       for(int k = 0; k < 3; ++k)
         if(q.barycentric[k] == FT(0))
-        {
-          const Surface_point<FT> other = same_point_across_edge(mesh, q, k);
-          if(other.face != Index(-1))
-            entries.emplace_back(other.face, Entry{Index(t), other.barycentric, infinity(), Index(-1), Index(-1),
-                                                   Point{number<FT>(0), number<FT>(0)}});
-        }
+          same_point_across_edge(mesh, q, k, across);
+      for(const Surface_point<FT>& other : across)
+        entries.emplace_back(other.face, Entry{Index(t), other.barycentric, infinity(), Index(-1), Index(-1),
+                                               Point{number<FT>(0), number<FT>(0)}});
     }
     std::stable_sort(entries.begin(), entries.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });

@@ -81,13 +81,19 @@ public:
   // the path, in the frame of `corner`, one of v's corners: position `back` at `v`), from the
   // pseudo-source `origin`. Paths that tie with the best one widen the recorded range of arrival
   // directions: the shadow of a saddle is the union of their shadows. Returns whether `v` must be
-  // queued (again) at its distance.
+  // queued (again) at its distance. With `corner` no_halfedge, `v` is reached from `from`, a copy
+  // of it (the same point, see Vertex_copies.h), at the copy's distance `d`: copies are singular,
+  // so no direction is recorded, and only a shorter distance counts (a tie would go back and
+  // forth between the copies).
   bool relax(Index v, FT d, Index corner, const Point& direction, Index from)
   {
-    const FT back = direction_position(m_mesh, corner, direction);
     const FT dv = distance[v];
     Incoming_directions<FT>& in = incoming[v];
-    if(d < dv - T::rounding_margin(dv) || dv == Number_type_math<FT>::infinity())
+    const bool shorter = d < dv - T::rounding_margin(dv) || dv == Number_type_math<FT>::infinity();
+    if(corner == Mesh::no_halfedge && !shorter)
+      return false;
+    const FT back = corner == Mesh::no_halfedge ? number<FT>(0) : direction_position(m_mesh, corner, direction);
+    if(shorter)
     {
       distance[v] = d;
       pseudo_sources.distance_dropped(v);

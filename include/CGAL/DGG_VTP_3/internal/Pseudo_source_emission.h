@@ -18,6 +18,7 @@
 #include <CGAL/DGG_VTP_3/internal/Surface_point.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Vertex_copies.h>
 #include <CGAL/DGG_VTP_3/internal/Vertex_directions.h>
 #include <CGAL/DGG_VTP_3/internal/Window_construction.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace CGAL {
 namespace DGG_VTP_3 {
@@ -82,6 +84,15 @@ public:
       across_corner(v, dv, *c, out);
   }
 
+  // a vertex at distance `dv`: its copies (see Vertex_copies.h) are the same point, reached
+  // through it at no cost (no corner: a step of length zero)
+  template <class Out>
+  void to_copies(Index v, FT dv, Out& out) const
+  {
+    for(Index u = m_mesh.next_copy(v); u != v; u = m_mesh.next_copy(u))
+      out.relax(u, dv, Mesh::no_halfedge, Point{number<FT>(0), number<FT>(0)}, v);
+  }
+
   // Lines 11-13 of the exact algorithm: a shortest path bends at a saddle only if it turns by at
   // least pi on both sides, so a saddle emits windows only into the faces that meet the cone
   // [back + pi, back + angle_sum - pi] of the directions it arrived from, widened by a small
@@ -113,26 +124,20 @@ public:
       across_corner(v, dv, m_mesh.corner_of_rank(v, Index(((r % k) + k) % k)), out);
   }
 
-  // Lines 2-7 for a source inside a face (or on an edge, then in both faces): it reaches the
+  // Lines 2-7 for a source inside a face (or on an edge, then in all its faces): it reaches the
   // face's corners straight and sends a full-edge window across each edge it is not on.
   // `out_in_face(f)` is the `out` of the patch of face f.
   template <class OutInFace>
   void from_surface_point(const Surface_point<FT>& s, Index origin, OutInFace&& out_in_face) const
   {
-    Surface_point<FT> other{Index(-1), {number<FT>(0), number<FT>(0), number<FT>(0)}};
+    std::vector<Surface_point<FT>> at(1, s);
     for(int k = 0; k < 3; ++k)
       if(s.barycentric[k] == FT(0))
-      {
-        const Surface_point<FT> across = same_point_across_edge(m_mesh, s, k);
-        if(across.face != Index(-1))
-          other = across;
-      }
-    // the two faces of an edge point in the same order however the point was given
-    if(other.face != Index(-1) && other.face < s.face)
-      from_point_in_face(other, origin, out_in_face(other.face));
-    from_point_in_face(s, origin, out_in_face(s.face));
-    if(other.face != Index(-1) && other.face > s.face)
-      from_point_in_face(other, origin, out_in_face(other.face));
+        same_point_across_edge(m_mesh, s, k, at);
+    // the faces of an edge point in the same order however the point was given
+    std::sort(at.begin(), at.end(), [](const Surface_point<FT>& a, const Surface_point<FT>& b) { return a.face < b.face; });
+    for(const Surface_point<FT>& p : at)
+      from_point_in_face(p, origin, out_in_face(p.face));
   }
 
 private:
@@ -146,9 +151,9 @@ private:
     // from target(h) back along its corner's last edge, from source(prev) back along prev
     out.relax(m_mesh.target(h), dv + m_mesh.length(h), across, m_mesh.apex(across), v);
     out.relax(m_mesh.source(prev), dv + m_mesh.length(prev), prev, Point{number<FT>(1), number<FT>(0)}, v);
-    const Index t = m_mesh.opposite(across);
-    if(t != Mesh::no_halfedge)
-      out.add_window(t, window_across_corner(m_mesh, h, dv, m_keys, v));
+    if(m_mesh.has_face_across(across))
+      for_each_face_across(m_mesh, across, window_across_corner(m_mesh, h, dv, m_keys, v),
+                           [&out](Index t, const Window<FT>& w) { out.add_window(t, w); });
   }
 
   template <class Out>
@@ -165,10 +170,11 @@ private:
       const Point q{b[(k + 1) % 3] * m_mesh.length(e) + b[(k + 2) % 3] * c.x, b[(k + 2) % 3] * c.y};
       const FT to_source = length(q);
       out.relax(m_mesh.source(e), to_source, e, q, origin);
-      const Index t = m_mesh.opposite(e);
-      if(b[(k + 2) % 3] != FT(0) && t != Mesh::no_halfedge) // not on this edge
-        out.add_window(t, window_from_point(m_mesh, e, q, number<FT>(0), length(q - Point{m_mesh.length(e), number<FT>(0)}),
-                                            to_source, m_keys, origin));
+      if(b[(k + 2) % 3] != FT(0) && m_mesh.has_face_across(e)) // not on this edge
+        for_each_face_across(m_mesh, e,
+                             window_from_point(m_mesh, e, q, number<FT>(0), length(q - Point{m_mesh.length(e), number<FT>(0)}),
+                                               to_source, m_keys, origin),
+                             [&out](Index t, const Window<FT>& w) { out.add_window(t, w); });
     }
   }
 

@@ -15,9 +15,11 @@
 #include <CGAL/license/DGG_VTP_3.h>
 
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Vertex_copies.h>
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 namespace CGAL {
 namespace DGG_VTP_3 {
@@ -32,22 +34,31 @@ struct Surface_point
   std::array<FT, 3> barycentric;
 };
 
-// A point on an edge belongs to both faces of the edge: `q` (on the edge opposite corner k, i.e.
-// of halfedge 3 f + k + 1, so its coordinate k is 0) as the face on the other side sees it. Its
-// face is Index(-1) on a border edge.
+// A point on an edge belongs to every face of the edge: appends to `out` the point `q` (on the
+// edge opposite corner k, i.e. of halfedge e = 3 f + k + 1, so its coordinate k is 0) as the face
+// on the other side sees it, if any, and the faces of the same edge in other sheets (see
+// Vertex_copies.h).
 template <class FT>
-Surface_point<FT> same_point_across_edge(const Unfolded_mesh<FT>& mesh, const Surface_point<FT>& q, int k)
+void same_point_across_edge(const Unfolded_mesh<FT>& mesh, const Surface_point<FT>& q, int k,
+                            std::vector<Surface_point<FT>>& out)
 {
   using Mesh = Unfolded_mesh<FT>;
   using Index = typename Mesh::Index;
-  Surface_point<FT> other{Index(-1), {number<FT>(0), number<FT>(0), number<FT>(0)}};
-  const Index o = mesh.opposite(3 * q.face + (k + 1) % 3);
-  if(o == Mesh::no_halfedge)
-    return other;
-  other.face = Mesh::face(o);
-  other.barycentric[o % 3] = q.barycentric[(k + 2) % 3]; // o starts where 3 f + k + 1 ends
-  other.barycentric[(o + 1) % 3] = q.barycentric[(k + 1) % 3];
-  return other;
+  const Index e = 3 * q.face + Index((k + 1) % 3);
+  const auto add = [&](Index g) {
+    Surface_point<FT> other{Mesh::face(g), {number<FT>(0), number<FT>(0), number<FT>(0)}};
+    // g starts where e ends (its opposite, or a twin the same way), or where e starts
+    const bool reversed = same_point(mesh, mesh.source(g), mesh.target(e));
+    other.barycentric[g % 3] = q.barycentric[reversed ? (k + 2) % 3 : (k + 1) % 3];
+    other.barycentric[(g + 1) % 3] = q.barycentric[reversed ? (k + 1) % 3 : (k + 2) % 3];
+    out.push_back(other);
+  };
+  const Index o = mesh.opposite(e);
+  if(o != Mesh::no_halfedge)
+    add(o);
+  for(Index g = mesh.next_twin(e); g != e; g = mesh.next_twin(g))
+    if(g != o)
+      add(g);
 }
 
 } // namespace internal

@@ -108,9 +108,19 @@ public:
   // vertices where several fans of faces meet (kept: geodesics may pass through them)
   std::size_t number_of_non_manifold_vertices() const { return m_non_manifold_vertices; }
 
+  // Copies of one point, sheets split apart where they met (see link_copies()): the next vertex
+  // at the point of `v`, round a cycle (`v` itself if none); the next halfedge along the edge of
+  // `h` in another sheet, round a cycle (`h` itself if none). A window leaving a face across the
+  // edge of `h` enters the faces of opposite(h) and of these (see for_each_face_across()).
+  Index next_copy(Index v) const { return m_next_copy.empty() ? v : m_next_copy[v]; }
+  Index next_twin(Index h) const { return m_next_twin.empty() ? h : m_next_twin[h]; }
+  bool has_face_across(Index h) const { return m_opposite[h] != no_halfedge || next_twin(h) != h; }
+
   template <class FT_>
   friend std::vector<std::uint32_t> unfold_triangles(std::vector<FT_> xyz, std::vector<std::uint32_t> corner_vertex,
                                                      std::vector<std::uint32_t> opposite, Unfolded_mesh<FT_>& out);
+  template <class FT_>
+  friend void link_copies(const std::vector<std::uint32_t>& group, Unfolded_mesh<FT_>& mesh);
 
 private:
   std::vector<Index> m_corner_vertex;       // 3F: vertex at each corner
@@ -125,6 +135,8 @@ private:
   std::vector<char> m_singular;             // V: border or non-manifold vertex
   std::vector<char> m_exact_pseudo_source;  // V: pseudo-source of the exact (VTP) propagation
   std::size_t m_non_manifold_vertices = 0;
+  std::vector<Index> m_next_copy;           // V, or empty where no vertex has a copy
+  std::vector<Index> m_next_twin;           // 3F, or empty where no edge has a copy
 };
 
 // Halfedges are numbered 3 f + k in 32 bits, the largest number meaning "none": throws

@@ -25,6 +25,7 @@
 #include <CGAL/DGG_VTP_3/internal/Round_scheduler.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Vertex_copies.h>
 #include <CGAL/DGG_VTP_3/internal/Vertex_directions.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
 #include <CGAL/DGG_VTP_3/internal/Window_construction.h>
@@ -54,16 +55,14 @@ namespace internal {
 // Windows sit in per-halfedge window lists; a vertex-oriented priority queue pops the nearest
 // vertex, which may emit windows as a pseudo-source (see Pseudo_source_emission) and brings its
 // faces into the propagation region R; then the window lists inside R are propagated in FIFO
-// order until every window has left R. Pruning is by the distance bound, the ICH rule, "one
-// angle, two sides" and pairwise trimming (see Window_pruning), all of them on keys (see Window
-// and Tuning::key_ratio). With accuracy 0 this is the exact VTP algorithm: keys are distances,
-// only saddle, border and non-manifold vertices are pseudo-sources and windows travel without
-// bound. DGG-VTP adds the distance bound, and the relay vertices of the windows it stops as
-// pseudo-sources (see Pseudo_source_states).
-//
-// The algorithm runs on one patch of faces at a time (Patch_partition), in rounds that a
-// Round_scheduler drives; whatever it does to another patch's part of the mesh goes through the
-// scheduler's hand_off().
+// order until every window has left R (into every sheet of an edge of copies: Vertex_copies.h).
+// Pruning is by the distance bound, the ICH rule, "one angle, two sides" and pairwise trimming
+// (see Window_pruning), all of them on keys (see Window and Tuning::key_ratio). With accuracy 0
+// this is the exact VTP algorithm: keys are distances, only saddle and singular vertices are
+// pseudo-sources and windows travel without bound. DGG-VTP adds the distance bound, and the
+// relay vertices of the windows it stops as pseudo-sources (see Pseudo_source_states).
+// It runs on one patch of faces at a time (Patch_partition), in rounds that a Round_scheduler
+// drives; what it does to another patch's part of the mesh goes through the scheduler's hand_off().
 template <class FT>
 class Window_propagation
 {
@@ -202,6 +201,7 @@ private:
       ++p.stats.vertices_popped;
       // lines 10-13: v as a pseudo-source
       Emission_out out{*this, p};
+      m_emission.to_copies(v, m_vertices.distance[v], out);
       if(is_dgg() ? m_vertices.is_source[v] || m_vertices.pseudo_sources.emit_at_pop(v) : m_vertices.is_source[v] || m_mesh.is_singular(v))
         m_emission.all_around(v, m_vertices.distance[v], out);
       else if(!is_dgg() && m_mesh.is_exact_pseudo_source(v))
@@ -390,11 +390,9 @@ private:
             best.value_window->origin);
     }
 
-    // lines 19-26: the children on the edges (c, a) and (b, c); a child whose ray grazes c takes
-    // it as its new CH-relay vertex on that side (line 22); one whose side was cut loses the
-    // relay of that side
-    const Index left = m_mesh.opposite(Mesh::prev(h));
-    const Index right = m_mesh.opposite(Mesh::next(h));
+    // lines 19-26: the children on the edges (c, a) and (b, c); a child whose ray grazes c takes it
+    // as its CH-relay vertex on that side (line 22); one whose side was cut loses that relay
+    const bool left = m_mesh.has_face_across(Mesh::prev(h)), right = m_mesh.has_face_across(Mesh::next(h));
     const Point b{len, number<FT>(0)};
     Win child;
     for(std::size_t i = 0; i < p.buffer.size(); ++i)
@@ -404,25 +402,27 @@ private:
       Sides<FT> keep{w.b1, w.b0};
       if(best.window != nullptr && &w != best.window)
         keep = sides_of_best_path(w, p.toward_apex[i], c, best);
-      if(left != Mesh::no_halfedge && w.b0 < (std::min)(x, keep.left_end) &&
+      if(left && w.b0 < (std::min)(x, keep.left_end) &&
          left_child(w, c, x, keep.left_end, m_mesh.length(Mesh::prev(h)), child))
       {
         if(x < keep.left_end)
           take_relay(child, child.relay_right, child.relay_right_vertex, length(c - w.source), apex_vertex, m_keys);
         else if(keep.left_end < w.b1)
           child.drop_relay(child.relay_right);
-        add_window(p, left, with_bound(child, m_keys));
+        for_each_face_across(m_mesh, Mesh::prev(h), with_bound(child, m_keys),
+                             [this, &p](Index t, const Win& in) { add_window(p, t, in); });
         if(x < keep.left_end)
           anticipate_stop(p, child, apex_vertex, m_mesh.length(Mesh::prev(h)));
       }
-      if(right != Mesh::no_halfedge && (std::max)(x, keep.right_start) < w.b1 &&
+      if(right && (std::max)(x, keep.right_start) < w.b1 &&
          right_child(w, b, c, x, keep.right_start, m_mesh.length(Mesh::next(h)), child))
       {
         if(keep.right_start < x)
           take_relay(child, child.relay_left, child.relay_left_vertex, length(c - w.source), apex_vertex, m_keys);
         else if(w.b0 < keep.right_start)
           child.drop_relay(child.relay_left);
-        add_window(p, right, with_bound(child, m_keys));
+        for_each_face_across(m_mesh, Mesh::next(h), with_bound(child, m_keys),
+                             [this, &p](Index t, const Win& in) { add_window(p, t, in); });
         if(keep.right_start < x)
           anticipate_stop(p, child, apex_vertex, m_mesh.length(Mesh::next(h)));
       }

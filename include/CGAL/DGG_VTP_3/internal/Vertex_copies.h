@@ -1,0 +1,184 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// All rights reserved.
+//
+// This file is part of DGG_VTP_3, a package written for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : DGG-VTP for CGAL team
+
+#ifndef CGAL_DGG_VTP_3_INTERNAL_VERTEX_COPIES_H
+#define CGAL_DGG_VTP_3_INTERNAL_VERTEX_COPIES_H
+
+#include <CGAL/license/DGG_VTP_3.h>
+
+#include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/Window.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <iterator>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace DGG_VTP_3 {
+namespace internal {
+
+// Copies of one point. A soup with an edge of more than two triangles, or sheets meeting at a
+// vertex, is made a surface by splitting (CGAL::Polygon_mesh_processing::orient_polygon_soup()
+// appends copies of the points where sheets meet). The copies are still one point of the input:
+// a path reaching one goes on from all of them at no cost, and one reaching an edge between
+// copies crosses into every sheet that has that edge. So a copy is a singular vertex (paths may
+// turn there at any angle, into another sheet), its distance is relayed to the other copies as
+// a step of length zero, and a window crossing an edge of copies enters the faces of all of
+// its sheets.
+
+// Per point, a number shared by its copies alone (the least point of its copies): point i is a
+// copy of point copy_of[i], and of that one's copies. Throws std::invalid_argument for a range
+// of another size than the points', an index beyond them, or a copy at another place than its
+// point (`coordinates(i)`: the coordinates of point i, comparable with ==).
+template <class CopyRange, class Coordinates>
+std::vector<std::uint32_t> copy_groups(const CopyRange& copy_of, std::size_t nv, const Coordinates& coordinates)
+{
+  if(std::size_t(std::distance(std::begin(copy_of), std::end(copy_of))) != nv)
+    throw std::invalid_argument("copy_of must give one point per point (" + std::to_string(nv) + ")");
+  std::vector<std::uint32_t> group(nv);
+  std::iota(group.begin(), group.end(), std::uint32_t(0));
+  const auto root = [&group](std::uint32_t v) {
+    while(group[v] != v)
+      v = group[v] = group[group[v]];
+    return v;
+  };
+  std::size_t i = 0;
+  for(const auto& c : copy_of)
+  {
+    const std::size_t j = std::size_t(c);
+    if(j >= nv)
+      throw std::invalid_argument("copy_of gives point " + std::to_string(i) + " as a copy of point " +
+                                  std::to_string(c) + ", but there are " + std::to_string(nv) + " points");
+    if(j != i && !(coordinates(i) == coordinates(j)))
+      throw std::invalid_argument("copy_of gives point " + std::to_string(i) + " as a copy of point " +
+                                  std::to_string(j) + ", which is at another place");
+    const std::uint32_t a = root(std::uint32_t(i)), b = root(std::uint32_t(j));
+    group[(std::max)(a, b)] = (std::min)(a, b);
+    ++i;
+  }
+  for(std::uint32_t v = 0; v < nv; ++v)
+    group[v] = root(v);
+  return group;
+}
+
+// Links the copies of each point that faces use (`group`: per vertex, as copy_groups() gives it)
+// and the halfedges along the same edge in different sheets, in cycles (see
+// Unfolded_mesh::next_copy()); a copy becomes singular. Nothing is stored where no point has a
+// copy.
+template <class FT>
+void link_copies(const std::vector<std::uint32_t>& group, Unfolded_mesh<FT>& mesh)
+{
+  using Index = typename Unfolded_mesh<FT>::Index;
+  const Index nv = Index(mesh.number_of_vertices());
+  // the copies that faces use, in cycles: each points to the one before it
+  std::vector<Index> last(nv, Unfolded_mesh<FT>::no_halfedge), next(nv);
+  bool copies = false;
+  for(Index v = 0; v < nv; ++v)
+  {
+    next[v] = v;
+    if(mesh.corners_begin(v) == mesh.corners_end(v))
+      continue;
+    Index& l = last[group[v]];
+    if(l != Unfolded_mesh<FT>::no_halfedge)
+    {
+      next[v] = next[l];
+      next[l] = v;
+      copies = true;
+    }
+    l = v;
+  }
+  if(!copies)
+    return;
+  for(Index v = 0; v < nv; ++v)
+    if(next[v] != v)
+      mesh.m_singular[v] = mesh.m_exact_pseudo_source[v] = 1;
+  mesh.m_next_copy.swap(next);
+
+  // the halfedges between copies, by the groups of their ends (the lesser first)
+  std::vector<std::pair<std::uint64_t, Index>> keyed;
+  for(Index h = 0; h < mesh.number_of_halfedges(); ++h)
+    if(mesh.next_copy(mesh.source(h)) != mesh.source(h) && mesh.next_copy(mesh.target(h)) != mesh.target(h))
+    {
+      const std::uint64_t a = group[mesh.source(h)], b = group[mesh.target(h)];
+      keyed.emplace_back((std::min)(a, b) << 32 | (std::max)(a, b), h);
+    }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<Index> twin;
+  for(std::size_t first = 0, end = 0; first < keyed.size(); first = end)
+  {
+    end = first + 1;
+    while(end < keyed.size() && keyed[end].first == keyed[first].first)
+      ++end;
+    // one sheet's edge (a halfedge, or two opposite ones) has nowhere else to go
+    if(end - first == 1 || (end - first == 2 && mesh.opposite(keyed[first].second) == keyed[first + 1].second))
+      continue;
+    if(twin.empty())
+    {
+      twin.resize(mesh.number_of_halfedges());
+      std::iota(twin.begin(), twin.end(), Index(0));
+    }
+    for(std::size_t k = first; k < end; ++k)
+      twin[keyed[k].second] = keyed[k + 1 < end ? k + 1 : first].second;
+  }
+  mesh.m_next_twin.swap(twin);
+}
+
+// whether vertices `a` and `b` are the same point (one, or copies)
+template <class FT>
+bool same_point(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index a, typename Unfolded_mesh<FT>::Index b)
+{
+  for(auto u = mesh.next_copy(a); u != a; u = mesh.next_copy(u))
+    if(u == b)
+      return true;
+  return a == b;
+}
+
+// Calls `add(g, w)` for each halfedge g whose face a window leaving the face of `x` across its
+// edge enters: opposite(x), if any, then the twins of `x` (the same edge in other sheets). `w`
+// is in the frame of opposite(x), the edge the other way; a twin along the same way as `x` gets
+// it mirrored (its sides swapped, with their relays).
+template <class FT, class Add>
+void for_each_face_across(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index x, const Window<FT>& w,
+                          Add&& add)
+{
+  const auto o = mesh.opposite(x);
+  if(o != Unfolded_mesh<FT>::no_halfedge)
+    add(o, w);
+  for(auto g = mesh.next_twin(x); g != x; g = mesh.next_twin(g))
+  {
+    if(g == o)
+      continue;
+    if(same_point(mesh, mesh.source(g), mesh.target(x)))
+    {
+      add(g, w);
+      continue;
+    }
+    const FT len = mesh.length(g);
+    Window<FT> m = w;
+    m.b0 = len - w.b1;
+    m.b1 = len - w.b0;
+    m.source.x = len - w.source.x;
+    std::swap(m.relay_left, m.relay_right);
+    std::swap(m.relay_left_vertex, m.relay_right_vertex);
+    add(g, m);
+  }
+}
+
+} // namespace internal
+} // namespace DGG_VTP_3
+} // namespace CGAL
+
+#endif // CGAL_DGG_VTP_3_INTERNAL_VERTEX_COPIES_H
