@@ -89,6 +89,11 @@ public:
    *     \cgalParamType{a model of `DGGVTPTraits_3`}
    *     \cgalParamDefault{`GeomTraits()`}
    *   \cgalParamNEnd
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::concurrency_tag}
+   *     \cgalParamDescription{as for `Geodesic_distance_solver`; the points are read in parallel too}
+   *     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`, a value}
+   *     \cgalParamDefault{`CGAL::Sequential_tag()`}
+   *   \cgalParamNEnd
    * \cgalNamedParamsEnd
    *
    * \throws std::invalid_argument for what the constructor of `Geodesic_distance_solver` refuses,
@@ -166,13 +171,14 @@ private:
   static Core prepare(const PointRange& points, const TriangleRange& triangles, const NamedParameters& np)
   {
     using Point = typename std::iterator_traits<decltype(std::begin(points))>::value_type;
+    using Tag = typename Core::template Preparation_tag<NamedParameters>;
     typename Core::Mesh mesh;
-    const std::vector<std::uint32_t> order = internal::unfold_triangle_soup(
+    const std::vector<std::uint32_t> order = internal::unfold_triangle_soup<Tag>(
       points, triangles,
       parameters::choose_parameter<Identity_property_map<Point>>(parameters::get_parameter(np, internal_np::point_map)),
       parameters::choose_parameter<GeomTraits>(parameters::get_parameter(np, internal_np::geom_traits)),
       mesh);
-    return Core(internal::Index_numbering(mesh.number_of_vertices(), mesh.number_of_faces()), std::move(mesh), order);
+    return Core(Tag(), internal::Index_numbering(mesh.number_of_vertices(), mesh.number_of_faces()), std::move(mesh), order);
   }
 
   Core m_core; // the prepared soup and the queries

@@ -35,6 +35,7 @@ struct max_distance_t {};
 struct targets_t {};
 struct target_distances_t {};
 struct nearest_source_map_t {};
+struct concurrency_tag_t {};
 
 } // namespace internal_np
 
@@ -72,6 +73,10 @@ CGAL_DGG_VTP_3_NAMED_PARAMETER(target_distances)
 /// A writable vertex property map that receives, per vertex, the number of its nearest source in
 /// the range of sources (`std::size_t(-1)` where unreachable).
 CGAL_DGG_VTP_3_NAMED_PARAMETER(nearest_source_map)
+/// The preparation of a solver's constructor on several threads: `CGAL::Parallel_tag` (TBB),
+/// `CGAL::Parallel_if_available_tag` or `CGAL::Sequential_tag`, as a value
+/// (`concurrency_tag(CGAL::Parallel_tag())`). CGAL names it so from 6.0 on.
+CGAL_DGG_VTP_3_NAMED_PARAMETER(concurrency_tag)
 
 #undef CGAL_DGG_VTP_3_NAMED_PARAMETER
 

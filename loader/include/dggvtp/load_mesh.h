@@ -13,6 +13,7 @@
 #include <dggvtp/loaded_soup.h>
 #include <dggvtp/triangulate.h>
 
+#include <CGAL/DGG_VTP_3/parameters.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/io.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -20,6 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
@@ -231,15 +233,16 @@ inline void triangles_to_polygons(Loaded_soup& soup)
   std::vector<std::array<std::uint32_t, 3>>().swap(soup.triangles);
 }
 
-// A solver of the soup's triangles (a Triangle_soup_geodesic_distance_solver). Throws
-// std::invalid_argument as the solver does.
-template <class Solver>
+// A solver of the soup's triangles (a Triangle_soup_geodesic_distance_solver), prepared as
+// `ConcurrencyTag` says. Throws std::invalid_argument as the solver does.
+template <class Solver, class ConcurrencyTag>
 Solver make_soup_solver(const Loaded_soup& soup)
 {
   using Point = typename Solver::Traits::Point_3;
   using FT = typename Solver::Traits::FT;
+  const auto np = CGAL::DGG_VTP_3::parameters::concurrency_tag(ConcurrencyTag());
   if constexpr(std::is_same<Point, Loaded_soup::Point>::value)
-    return Solver(soup.points, soup.triangles);
+    return Solver(soup.points, soup.triangles, np);
   else
   {
     // Converted into an array first, not by a point map: GCC 12.2's vectorizer (-O2) drops the
@@ -249,7 +252,7 @@ Solver make_soup_solver(const Loaded_soup& soup)
     points.reserve(soup.points.size());
     for(const auto& p : soup.points)
       points.emplace_back(FT(p.x()), FT(p.y()), FT(p.z()));
-    return Solver(points, soup.triangles);
+    return Solver(points, soup.triangles, np);
   }
 }
 
@@ -347,16 +350,17 @@ void repair_into_triangles(Loaded_soup& soup)
 // triangle soup goes to the solver as it is. Any other soup (polygons, inconsistent orientations,
 // edges of more than two faces, vertices where several fans meet, or input the solver refuses)
 // takes the path of repairs through a Surface_mesh, which accepts, repairs or refuses it, and goes
-// to the solver as the mesh's triangles. Returns the seconds spent on repairs (part of loading,
-// not of preparing). Throws Input_error or std::invalid_argument for input it refuses.
-template <class Solver>
+// to the solver as the mesh's triangles. Returns the seconds spent on repairs (not on preparing).
+// The solver is prepared as `ConcurrencyTag` says, the repairs on this thread. Throws Input_error
+// or std::invalid_argument for input it refuses.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class Solver>
 double make_solver(Loaded_soup& soup, std::optional<Solver>& solver)
 {
   if(soup.polygons.empty())
   {
     try
     {
-      solver.emplace(make_soup_solver<Solver>(soup));
+      solver.emplace(make_soup_solver<Solver, ConcurrencyTag>(soup));
       if(solver->number_of_non_manifold_vertices() == 0)
         return 0.;
       solver.reset();
@@ -368,7 +372,7 @@ double make_solver(Loaded_soup& soup, std::optional<Solver>& solver)
   const auto t0 = std::chrono::steady_clock::now();
   repair_into_triangles<typename Solver::Traits>(soup);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  solver.emplace(make_soup_solver<Solver>(soup));
+  solver.emplace(make_soup_solver<Solver, ConcurrencyTag>(soup));
   return seconds;
 }
 

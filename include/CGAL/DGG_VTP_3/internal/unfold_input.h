@@ -15,6 +15,7 @@
 #include <CGAL/license/DGG_VTP_3.h>
 
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/for_each_block.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -52,8 +53,9 @@ void store_point(const GeomTraits& gt, const Point& p, std::size_t i, std::vecto
 
 // Fills the mesh from a user's triangle mesh (a free function: the graph's next(), source()...
 // would be hidden inside the class by the members of the same names). Returns the order of the
-// faces: new face i is the user's face order[i] (by the face index map).
-template <class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
+// faces: new face i is the user's face order[i] (by the face index map). The graph is walked on
+// this thread (its ranges need not be random access); `ConcurrencyTag` is unfold_triangles()'s.
+template <class ConcurrencyTag, class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
           class GeomTraits>
 std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
                           FaceIndexMap fim, const GeomTraits& gt, Unfolded_mesh<FT>& out)
@@ -106,7 +108,7 @@ std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPo
       }
     }
   }
-  return unfold_triangles(std::move(xyz), std::move(corner_vertex), std::move(opposite_halfedge), out);
+  return unfold_triangles<ConcurrencyTag>(std::move(xyz), std::move(corner_vertex), std::move(opposite_halfedge), out);
 }
 
 
@@ -123,8 +125,9 @@ bool is_negative_index(Integer v)
 // map `pm`) and `triangles` (a range of ranges of 3 indices into `points`). The faces must form
 // a surface as they are (each edge shared by at most two triangles, which go along it in opposite
 // directions); vertices where several fans of triangles meet are kept. Returns the order of the
-// faces: new face i is triangle order[i].
-template <class FT, class PointRange, class TriangleRange, class PointMap, class GeomTraits>
+// faces: new face i is triangle order[i]. The points are read as `ConcurrencyTag` says (they are a
+// random access range), the triangles on this thread.
+template <class ConcurrencyTag, class FT, class PointRange, class TriangleRange, class PointMap, class GeomTraits>
 std::vector<std::uint32_t> unfold_triangle_soup(const PointRange& points, const TriangleRange& triangles, PointMap pm,
                                                 const GeomTraits& gt, Unfolded_mesh<FT>& out)
 {
@@ -134,9 +137,10 @@ std::vector<std::uint32_t> unfold_triangle_soup(const PointRange& points, const 
   check_index_range<FT>(nv, nf);
 
   std::vector<FT> xyz(3 * nv);
-  std::size_t i = 0;
-  for(const auto& p : points)
-    store_point(gt, get(pm, p), i++, xyz);
+  for_each_block<ConcurrencyTag>(nv, [&](std::size_t i0, std::size_t i1) {
+    for(std::size_t i = i0; i < i1; ++i)
+      store_point(gt, get(pm, *(std::begin(points) + i)), i, xyz);
+  });
 
   std::vector<Index> corner_vertex(3 * nf);
   std::size_t f = 0;
@@ -157,7 +161,7 @@ std::vector<std::uint32_t> unfold_triangle_soup(const PointRange& points, const 
     ++f;
   }
 
-  return unfold_triangles(std::move(xyz), std::move(corner_vertex), std::vector<Index>(), out);
+  return unfold_triangles<ConcurrencyTag>(std::move(xyz), std::move(corner_vertex), std::vector<Index>(), out);
 }
 
 } // namespace internal
