@@ -90,7 +90,8 @@ public:
    *     \cgalParamDefault{`GeomTraits()`}
    *   \cgalParamNEnd
    *   \cgalParamNBegin{DGG_VTP_3::parameters::concurrency_tag}
-   *     \cgalParamDescription{as for `Geodesic_distance_solver`; the points are read in parallel too}
+   *     \cgalParamDescription{as for `Geodesic_distance_solver`; the points are read in parallel
+   *                           too, and so are the triangles if `TriangleRange` is random access}
    *     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`, a value}
    *     \cgalParamDefault{`CGAL::Sequential_tag()`}
    *   \cgalParamNEnd

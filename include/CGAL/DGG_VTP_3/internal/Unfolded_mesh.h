@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Default_init_allocator.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Vertex_directions.h>
 #include <CGAL/DGG_VTP_3/internal/for_each_block.h>
@@ -111,19 +112,19 @@ public:
   std::size_t number_of_non_manifold_vertices() const { return m_non_manifold_vertices; }
 
   template <class ConcurrencyTag, class FT_>
-  friend std::vector<std::uint32_t> unfold_triangles(std::vector<FT_> xyz, std::vector<std::uint32_t> corner_vertex,
-                                                     std::vector<std::uint32_t> opposite, Unfolded_mesh<FT_>& out);
+  friend std::vector<std::uint32_t> unfold_triangles(std::vector<FT_> xyz, Uninitialized_vector<std::uint32_t> corner_vertex,
+                                                     Uninitialized_vector<std::uint32_t> opposite, Unfolded_mesh<FT_>& out);
 
 private:
-  std::vector<Index> m_corner_vertex;       // 3F: vertex at each corner
-  std::vector<Index> m_opposite;            // 3F: opposite corner halfedge, or no_halfedge
-  std::vector<FT> m_length;                 // 3F: length of each halfedge
-  std::vector<FT> m_apex_x;                 // 3F: abscissa of the apex in each halfedge's frame
-  std::vector<FT> m_twice_area;             // F: twice the area (the apex's height times the length)
+  Uninitialized_vector<Index> m_corner_vertex; // 3F: vertex at each corner
+  Uninitialized_vector<Index> m_opposite;   // 3F: opposite corner halfedge, or no_halfedge
+  Uninitialized_vector<FT> m_length;        // 3F: length of each halfedge
+  Uninitialized_vector<FT> m_apex_x;        // 3F: abscissa of the apex in each halfedge's frame
+  Uninitialized_vector<FT> m_twice_area;    // F: twice the area (the apex's height times the length)
   std::vector<FT> m_corner_dot;             // 3F in exact types (else empty): ab . ac at each corner
   std::vector<Index> m_vertex_corners_begin;// V+1: CSR offsets into m_vertex_corners
-  std::vector<Index> m_vertex_corners;      // 3F: corners grouped by vertex, in turning order
-  std::vector<Index> m_corner_rank;         // 3F: position of each corner among its vertex's
+  Uninitialized_vector<Index> m_vertex_corners; // 3F: corners grouped by vertex, in turning order
+  Uninitialized_vector<Index> m_corner_rank; // 3F: position of each corner among its vertex's
   std::vector<char> m_singular;             // V: border or non-manifold vertex
   std::vector<char> m_exact_pseudo_source;  // V: pseudo-source of the exact (VTP) propagation
   std::size_t m_non_manifold_vertices = 0;
@@ -190,8 +191,8 @@ private:
 // for bit whatever the tag and the number of threads (it must be `Sequential_tag` for an exact `FT`,
 // whose numbers share their representations between copies).
 template <class ConcurrencyTag, class FT>
-std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std::uint32_t> corner_vertex,
-                                            std::vector<std::uint32_t> opposite, Unfolded_mesh<FT>& out)
+std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, Uninitialized_vector<std::uint32_t> corner_vertex,
+                                            Uninitialized_vector<std::uint32_t> opposite, Unfolded_mesh<FT>& out)
 {
   using Index = typename Unfolded_mesh<FT>::Index;
   constexpr Index no_halfedge = Unfolded_mesh<FT>::no_halfedge;
@@ -287,35 +288,38 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   });
   xyz = std::vector<FT>(); // its memory is the peak's
 
-  // border vertices: a corner there is on a border edge, or the previous halfedge of its face is
+  // border vertices, on one thread: the halfedges in order are a stream, a vertex's corners are not
   out.m_singular.assign(nv, 0);
-  for_each_block<ConcurrencyTag>(nv, [&](std::size_t v0, std::size_t v1) {
-    for(Index v = Index(v0); v < v1; ++v)
-      for(const Index* c = out.corners_begin(v); c != out.corners_end(v); ++c)
-        if(out.m_opposite[*c] == no_halfedge || out.m_opposite[Unfolded_mesh<FT>::prev(*c)] == no_halfedge)
-          out.m_singular[v] = 1;
-  });
+  for(Index h = 0; h < 3 * nf; ++h)
+    if(out.m_opposite[h] == no_halfedge)
+    {
+      out.m_singular[out.source(h)] = 1;
+      out.m_singular[out.target(h)] = 1;
+    }
   // angles are summed as turns (Angle_sum of each corner's last_edge_direction), never in radians
 
   // Put the corners of each vertex in turning order (corner h, then the corner across the edge
   // prev(h)), starting after the border if there is one, and sum the angles of each closed fan.
   // A vertex whose corners are not one fan (several umbrellas meet there) is singular.
-  out.m_corner_rank.assign(3 * nf, 0);
+  out.m_corner_rank.resize(3 * nf); // every corner's vertex writes it
   std::vector<Angle_sum<FT>> angle_sum(nv);
-  // Vertices in the faces' spatial order, the order of their first corners: their corners' faces
-  // are then near each other in memory.
-  std::vector<Index> spatial;
-  spatial.reserve(nv);
-  for(Index h = 0; h < 3 * nf; ++h)
-    if(*out.corners_begin(out.source(h)) == h)
-      spatial.push_back(out.source(h));
+  // Each vertex at its first corner (the smallest, marked before the loop puts any in turning
+  // order), so in the faces' spatial order: its corners' faces are then near each other in memory.
+  std::vector<char> is_first(3 * nf, 0);
+  for_each_block<ConcurrencyTag>(nv, [&](std::size_t v0, std::size_t v1) {
+    for(Index v = Index(v0); v < v1; ++v)
+      if(out.corners_begin(v) != out.corners_end(v))
+        is_first[*out.corners_begin(v)] = 1;
+  });
   std::atomic<std::size_t> non_manifold(0);
-  for_each_block<ConcurrencyTag>(spatial.size(), [&](std::size_t i0, std::size_t i1) {
+  for_each_block<ConcurrencyTag>(3 * nf, [&](std::size_t h0, std::size_t h1) {
     std::vector<Index> ordered;
     std::size_t pinched = 0;
-    for(std::size_t i = i0; i < i1; ++i)
+    for(Index corner = Index(h0); corner < h1; ++corner)
     {
-      const Index v = spatial[i];
+      if(!is_first[corner])
+        continue;
+      const Index v = out.source(corner);
       Index* first = out.m_vertex_corners.data() + out.m_vertex_corners_begin[v];
       Index* last = out.m_vertex_corners.data() + out.m_vertex_corners_begin[v + 1];
       Index start = *first;

@@ -14,18 +14,17 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Default_init_allocator.h>
 #include <CGAL/DGG_VTP_3/internal/for_each_block.h>
 
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -37,54 +36,67 @@ namespace internal {
 // order, the corners grouped by vertex, the opposite of each halfedge. `ConcurrencyTag` says how
 // the loops run (for_each_block()); the results do not depend on it.
 
+// One stable pass of a counting sort of the items 0 to n-1 by `digit(i)`, in [0, digits), shared
+// among threads in fixed blocks of 2^16 items: each block counts its digits, then its items of
+// digit d go after those of the smaller digits and of the blocks before it, where one pass over
+// all the items would put them; `place(i, position)` moves item i. Returns where the items of
+// each digit begin (digits + 1 offsets). With `skip_one_digit`, a pass whose items all have one
+// digit (which would move nothing) places nothing and returns no offsets.
+template <class ConcurrencyTag, class Digit, class Place>
+std::vector<std::size_t> counting_sort_pass(std::size_t n, std::size_t digits, const Digit& digit, const Place& place,
+                                            bool skip_one_digit)
+{
+  constexpr std::size_t block = std::size_t(1) << 16;
+  const std::size_t blocks = (n + block - 1) / block;
+  std::vector<std::size_t> first(blocks * digits);
+  for_each_block<ConcurrencyTag>(blocks, [&](std::size_t b0, std::size_t b1) {
+    for(std::size_t b = b0; b < b1; ++b)
+    {
+      std::size_t* count = first.data() + b * digits;
+      std::fill(count, count + digits, std::size_t(0));
+      for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i)
+        ++count[digit(i)];
+    }
+  }, 1);
+  std::vector<std::size_t> digit_begin(digits + 1, 0);
+  for(std::size_t d = 0, at = 0; d < digits; ++d)
+  {
+    digit_begin[d] = at;
+    for(std::size_t b = 0; b < blocks; ++b)
+      at += std::exchange(first[b * digits + d], at);
+    digit_begin[d + 1] = at;
+    if(skip_one_digit && at - digit_begin[d] == n)
+      return std::vector<std::size_t>();
+  }
+  for_each_block<ConcurrencyTag>(blocks, [&](std::size_t b0, std::size_t b1) {
+    for(std::size_t b = b0; b < b1; ++b)
+      for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i)
+        place(i, first[b * digits + digit(i)]++);
+  }, 1);
+  return digit_begin;
+}
+
+// a face and its place on the space-filling curve (no initializers: arrays of them are written whole)
+struct Face_key
+{
+  std::uint64_t key;
+  std::uint32_t face;
+};
+
 // Sorts (key, face) pairs by key, faces of equal keys in increasing order, as std::sort would:
-// a least significant digit first radix sort of the 63-bit keys, a few times faster. Each pass
-// counts the digits per block of 2^16 pairs; a block's pairs of digit d then go after those of
-// the smaller digits and of the blocks before it, as one block would place them, so that the
-// blocks move their pairs at the same time.
+// a least significant digit first radix sort of the 63-bit keys, a few times faster.
 template <class ConcurrencyTag>
-void sort_by_key(std::vector<std::pair<std::uint64_t, std::uint32_t>>& keys)
+void sort_by_key(Uninitialized_vector<Face_key>& keys)
 {
   constexpr int digit_bits = 11;
   constexpr std::size_t digits = std::size_t(1) << digit_bits;
-  constexpr std::size_t block = std::size_t(1) << 16;
-  const std::size_t n = keys.size();
-  const std::size_t blocks = (n + block - 1) / block;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> sorted(n);
-  std::vector<std::size_t> first(blocks * digits);
+  Uninitialized_vector<Face_key> sorted(keys.size());
   for(int shift = 0; shift < 64; shift += digit_bits)
-  {
-    const auto digit = [shift](const std::pair<std::uint64_t, std::uint32_t>& k) {
-      return std::size_t((k.first >> shift) & (digits - 1));
-    };
-    for_each_block<ConcurrencyTag>(blocks, [&](std::size_t b0, std::size_t b1) {
-      for(std::size_t b = b0; b < b1; ++b)
-      {
-        std::size_t* count = first.data() + b * digits;
-        std::fill(count, count + digits, std::size_t(0));
-        for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i)
-          ++count[digit(keys[i])];
-      }
-    }, 1);
-    std::size_t at = 0;
-    bool moves = true;
-    for(std::size_t d = 0; d < digits; ++d)
-    {
-      const std::size_t of_smaller_digits = at;
-      for(std::size_t b = 0; b < blocks; ++b)
-        at += std::exchange(first[b * digits + d], at);
-      if(at - of_smaller_digits == n)
-        moves = false; // one digit for all: nothing moves
-    }
-    if(!moves)
-      continue;
-    for_each_block<ConcurrencyTag>(blocks, [&](std::size_t b0, std::size_t b1) {
-      for(std::size_t b = b0; b < b1; ++b)
-        for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i)
-          sorted[first[b * digits + digit(keys[i])]++] = keys[i];
-    }, 1);
-    keys.swap(sorted);
-  }
+    if(!counting_sort_pass<ConcurrencyTag>(
+          keys.size(), digits, [&](std::size_t i) { return std::size_t((keys[i].key >> shift) & (digits - 1)); },
+          [&](std::size_t i, std::size_t position) { sorted[position] = keys[i]; }, true)
+          .empty())
+      keys.swap(sorted);
 }
 
 // Faces along a Z-order (Morton) curve of their centroids: faces near each other in the order are
@@ -93,7 +105,7 @@ void sort_by_key(std::vector<std::pair<std::uint64_t, std::uint32_t>>& keys)
 // `extent` receives the largest side of the bounding box of the vertices the faces use.
 template <class ConcurrencyTag, class FT>
 std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
-                                                const std::vector<std::uint32_t>& corner_vertex, double& extent)
+                                                const Uninitialized_vector<std::uint32_t>& corner_vertex, double& extent)
 {
   const std::size_t nf = corner_vertex.size() / 3;
   const std::size_t nv = xyz.size() / 3;
@@ -125,7 +137,7 @@ std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
     return x;
   };
   const double scale = extent > 0. && std::isfinite(extent) ? double((1 << 21) - 1) / extent : 0.;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(nf);
+  Uninitialized_vector<Face_key> keys(nf);
   for_each_block<ConcurrencyTag>(nf, [&](std::size_t f0, std::size_t f1) {
     for(std::size_t f = f0; f < f1; ++f)
     {
@@ -141,14 +153,14 @@ std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
         const double cell = t > 0. ? (std::min)(t, double((1 << 21) - 1)) : 0.;
         key |= spread(std::uint64_t(cell)) << c;
       }
-      keys[f] = {key, std::uint32_t(f)};
+      keys[f] = Face_key{key, std::uint32_t(f)};
     }
   });
   sort_by_key<ConcurrencyTag>(keys);
   std::vector<std::uint32_t> order(nf);
   for_each_block<ConcurrencyTag>(nf, [&](std::size_t f0, std::size_t f1) {
     for(std::size_t f = f0; f < f1; ++f)
-      order[f] = keys[f].second;
+      order[f] = keys[f].face;
   });
   return order;
 }
@@ -156,17 +168,17 @@ std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
 // renumbers the faces: new face i is the user's face order[i] (the corners' vertices and the
 // opposite halfedges if known, the only per-face data so far)
 template <class ConcurrencyTag>
-void reorder_faces(const std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& corner_vertex,
-                   std::vector<std::uint32_t>& opposite)
+void reorder_faces(const std::vector<std::uint32_t>& order, Uninitialized_vector<std::uint32_t>& corner_vertex,
+                   Uninitialized_vector<std::uint32_t>& opposite)
 {
   constexpr std::uint32_t none = std::uint32_t(-1);
   const std::size_t nf = order.size();
-  std::vector<std::uint32_t> new_face(nf);
+  Uninitialized_vector<std::uint32_t> new_face(nf);
   for_each_block<ConcurrencyTag>(nf, [&](std::size_t f0, std::size_t f1) {
     for(std::size_t f = f0; f < f1; ++f)
       new_face[order[f]] = std::uint32_t(f);
   });
-  std::vector<std::uint32_t> reordered_vertex(3 * nf), reordered_opposite(opposite.empty() ? 0 : 3 * nf);
+  Uninitialized_vector<std::uint32_t> reordered_vertex(3 * nf), reordered_opposite(opposite.empty() ? 0 : 3 * nf);
   for_each_block<ConcurrencyTag>(nf, [&](std::size_t f0, std::size_t f1) {
     for(std::size_t f = f0; f < f1; ++f)
       for(int k = 0; k < 3; ++k)
@@ -185,36 +197,46 @@ void reorder_faces(const std::vector<std::uint32_t>& order, std::vector<std::uin
 }
 
 // The corners (halfedges 3f+k) grouped by their vertex, in CSR form: those of vertex v are
-// corners[begin[v]] to corners[begin[v+1]-1], in increasing order.
+// corners[begin[v]] to corners[begin[v+1]-1], in increasing order. A counting sort in two stable
+// levels, so that no counter is shared between threads (atomic counters cost more than a second
+// thread saves): the corners by ranges of 2^shift vertices (at most 2048 ranges), then each
+// range's corners by vertex.
 template <class ConcurrencyTag>
-void group_corners_by_vertex(const std::vector<std::uint32_t>& corner_vertex, std::size_t nv,
-                             std::vector<std::uint32_t>& begin, std::vector<std::uint32_t>& corners)
+void group_corners_by_vertex(const Uninitialized_vector<std::uint32_t>& corner_vertex, std::size_t nv,
+                             std::vector<std::uint32_t>& begin, Uninitialized_vector<std::uint32_t>& corners)
 {
-  constexpr bool parallel = std::is_convertible<ConcurrencyTag, Parallel_tag>::value;
+  struct Corner { std::uint32_t vertex, corner; };
   const std::size_t nh = corner_vertex.size();
-  // the corners of a vertex come from any block: counted and placed through atomic counters
-  std::vector<std::atomic<std::uint32_t>> count(nv);
-  for_each_block<ConcurrencyTag>(nh, [&](std::size_t h0, std::size_t h1) {
-    for(std::size_t h = h0; h < h1; ++h)
-      count[corner_vertex[h]].fetch_add(1, std::memory_order_relaxed);
-  });
-  begin.assign(nv + 1, 0);
-  for(std::size_t v = 0; v < nv; ++v)
-  {
-    begin[v + 1] = begin[v] + count[v].load(std::memory_order_relaxed);
-    count[v].store(begin[v], std::memory_order_relaxed);
-  }
+  int shift = 0;
+  while(((nv + (std::size_t(1) << shift) - 1) >> shift) > 2048)
+    ++shift;
+  const std::size_t ranges = (nv + (std::size_t(1) << shift) - 1) >> shift;
+  Uninitialized_vector<Corner> by_range(nh);
+  const std::vector<std::size_t> range_begin = counting_sort_pass<ConcurrencyTag>(
+    nh, ranges, [&](std::size_t h) { return std::size_t(corner_vertex[h] >> shift); },
+    [&](std::size_t h, std::size_t position) { by_range[position] = Corner{corner_vertex[h], std::uint32_t(h)}; },
+    false);
+  begin.resize(nv + 1);
+  begin[nv] = std::uint32_t(nh);
   corners.resize(nh);
-  for_each_block<ConcurrencyTag>(nh, [&](std::size_t h0, std::size_t h1) {
-    for(std::size_t h = h0; h < h1; ++h)
-      corners[count[corner_vertex[h]].fetch_add(1, std::memory_order_relaxed)] = std::uint32_t(h);
-  });
-  // threads place a vertex's corners in the order they come to them
-  if constexpr(parallel)
-    for_each_block<ConcurrencyTag>(nv, [&](std::size_t v0, std::size_t v1) {
+  for_each_block<ConcurrencyTag>(ranges, [&](std::size_t r0, std::size_t r1) {
+    std::vector<std::uint32_t> fill;
+    for(std::size_t r = r0; r < r1; ++r)
+    {
+      const std::size_t v0 = r << shift, v1 = (std::min)(nv, (r + 1) << shift);
+      fill.assign(v1 - v0, 0);
+      for(std::size_t i = range_begin[r]; i < range_begin[r + 1]; ++i)
+        ++fill[by_range[i].vertex - v0];
+      std::uint32_t at = std::uint32_t(range_begin[r]);
       for(std::size_t v = v0; v < v1; ++v)
-        std::sort(corners.begin() + begin[v], corners.begin() + begin[v + 1]);
-    });
+      {
+        begin[v] = at;
+        at += std::exchange(fill[v - v0], at);
+      }
+      for(std::size_t i = range_begin[r]; i < range_begin[r + 1]; ++i)
+        corners[fill[by_range[i].vertex - v0]++] = by_range[i].corner;
+    }
+  }, 1);
 }
 
 // The opposite of each halfedge a->b: the one halfedge b->a, or `no_halfedge` on the border.
@@ -223,14 +245,14 @@ void group_corners_by_vertex(const std::vector<std::uint32_t>& corner_vertex, st
 // Throws std::invalid_argument where two halfedges go from a to b: the faces do not form a
 // surface as they are. Faces are named by the user's numbering, `order`.
 template <class ConcurrencyTag>
-std::vector<std::uint32_t> matched_halfedges(const std::vector<std::uint32_t>& corner_vertex,
-                                                   const std::vector<std::uint32_t>& begin,
-                                                   const std::vector<std::uint32_t>& corners,
-                                                   const std::vector<std::uint32_t>& order)
+Uninitialized_vector<std::uint32_t> matched_halfedges(const Uninitialized_vector<std::uint32_t>& corner_vertex,
+                                                         const std::vector<std::uint32_t>& begin,
+                                                         const Uninitialized_vector<std::uint32_t>& corners,
+                                                         const std::vector<std::uint32_t>& order)
 {
   const auto next = [](std::uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; };
   const auto prev = [](std::uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; };
-  std::vector<std::uint32_t> opposite(corner_vertex.size(), std::uint32_t(-1));
+  Uninitialized_vector<std::uint32_t> opposite(corner_vertex.size(), std::uint32_t(-1));
   for_each_block<ConcurrencyTag>(begin.size() - 1, [&](std::size_t a0, std::size_t a1) {
     std::vector<std::uint32_t> ahead, behind; // per corner at a: the vertex after it, the vertex before it
     for(std::size_t a = a0; a < a1; ++a)

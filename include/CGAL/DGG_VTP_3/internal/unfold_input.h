@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Default_init_allocator.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/for_each_block.h>
 
@@ -82,7 +83,7 @@ std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPo
     store_point(gt, get(vpm, v), i, xyz);
   }
 
-  std::vector<Index> corner_vertex(3 * nf), opposite_halfedge(3 * nf);
+  Uninitialized_vector<Index> corner_vertex(3 * nf), opposite_halfedge(3 * nf);
   std::vector<char> face_seen(nf, 0);
   for(auto f : faces(tm))
   {
@@ -125,8 +126,8 @@ bool is_negative_index(Integer v)
 // map `pm`) and `triangles` (a range of ranges of 3 indices into `points`). The faces must form
 // a surface as they are (each edge shared by at most two triangles, which go along it in opposite
 // directions); vertices where several fans of triangles meet are kept. Returns the order of the
-// faces: new face i is triangle order[i]. The points are read as `ConcurrencyTag` says (they are a
-// random access range), the triangles on this thread.
+// faces: new face i is triangle order[i]. The points (a random access range) are read as
+// `ConcurrencyTag` says, and so are the triangles if they are a random access range too.
 template <class ConcurrencyTag, class FT, class PointRange, class TriangleRange, class PointMap, class GeomTraits>
 std::vector<std::uint32_t> unfold_triangle_soup(const PointRange& points, const TriangleRange& triangles, PointMap pm,
                                                 const GeomTraits& gt, Unfolded_mesh<FT>& out)
@@ -142,10 +143,8 @@ std::vector<std::uint32_t> unfold_triangle_soup(const PointRange& points, const 
       store_point(gt, get(pm, *(std::begin(points) + i)), i, xyz);
   });
 
-  std::vector<Index> corner_vertex(3 * nf);
-  std::size_t f = 0;
-  for(const auto& triangle : triangles)
-  {
+  Uninitialized_vector<Index> corner_vertex(3 * nf);
+  const auto read_triangle = [&](std::size_t f, const auto& triangle) {
     std::size_t k = 0;
     for(const auto& v : triangle)
     {
@@ -158,10 +157,22 @@ std::vector<std::uint32_t> unfold_triangle_soup(const PointRange& points, const 
     }
     if(k != 3 || std::size_t(std::distance(std::begin(triangle), std::end(triangle))) != 3)
       throw std::invalid_argument("face " + std::to_string(f) + " is not a triangle");
-    ++f;
+  };
+  using Triangle_iterator = decltype(std::begin(triangles));
+  if constexpr(std::is_convertible<typename std::iterator_traits<Triangle_iterator>::iterator_category,
+                                   std::random_access_iterator_tag>::value)
+    for_each_block<ConcurrencyTag>(nf, [&](std::size_t f0, std::size_t f1) {
+      for(std::size_t f = f0; f < f1; ++f)
+        read_triangle(f, *(std::begin(triangles) + f));
+    });
+  else
+  {
+    std::size_t f = 0;
+    for(const auto& triangle : triangles)
+      read_triangle(f++, triangle);
   }
 
-  return unfold_triangles<ConcurrencyTag>(std::move(xyz), std::move(corner_vertex), std::vector<Index>(), out);
+  return unfold_triangles<ConcurrencyTag>(std::move(xyz), std::move(corner_vertex), Uninitialized_vector<Index>(), out);
 }
 
 } // namespace internal
