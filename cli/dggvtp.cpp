@@ -19,6 +19,7 @@
 #include <dggvtp/progress_line.h>
 #include <dggvtp/query_places.h>
 #include <dggvtp/repair.h>
+#include <dggvtp/threads.h>
 
 #include <CGAL/DGG_VTP_3.h>
 #include <CGAL/Simple_cartesian.h>
@@ -27,10 +28,6 @@
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <unistd.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -79,8 +76,9 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
   --epsilon E            DGG-VTP with accuracy E in [0, 1]: every distance within a relative error E
                          of the exact one (E = 0 is --exact)
   --precision P          double (default) or float
-  --threads T            number of threads, 0 = all cores (default 1); the distances are the
-                         same bit for bit for any T (without TBB at build time: one thread)
+  --threads T            number of threads of the preparation and the propagation, 0 = all cores
+                         (default 1); the distances are the same bit for bit for any T (without
+                         TBB at build time: one thread)
   --output FILE          one line per vertex of the file, in the file's order: the distance
                          printed with %.17g, or inf if no path on the surface reaches it;
                          '-' writes to standard output
@@ -105,7 +103,9 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          interpolation of the vertex distances over the triangles equals the
                          distance, through the mesh's edges; edges to unreached vertices are not
                          crossed
-  --stats FILE           one JSON object: sizes, times, window counts, peak memory
+  --stats FILE           one JSON object: sizes, the time of each stage (load, repair, prepare,
+                         locate, propagate, write) and the threads it used, window counts, peak
+                         memory
   --repair               repair the mesh with CGAL's Polygon_mesh_processing before the input
                          checks, once the faces that repeat a vertex are dropped (refused
                          without --repair): stitch_borders (coincident border edges),
@@ -418,8 +418,9 @@ private:
 struct Run
 {
   std::size_t faces = 0;
-  double seconds_make_mesh = 0.; // soup to mesh, with repairs: part of loading
+  double seconds_make_mesh = 0.; // the input policy's repairs (soup to mesh), if the soup needs them
   double seconds_prepare = 0., seconds_locate = 0., seconds_propagate = 0.;
+  std::size_t threads = 1;        // that prepared the solver and propagated
   CGAL::DGG_VTP_3::Propagation_statistics statistics;
   std::vector<double> distances;        // per file vertex, unless the propagation stopped early
   std::vector<long long> labels;        // per file vertex, with --labels: its nearest source's option, or -1
@@ -451,11 +452,10 @@ std::string number_text(double d)
 // The query of the options, on the places' range type. The solver keeps what it needs, so the
 // soup is gone before the propagation: the peak memory is the larger of input + solver and
 // solver + propagation, not their sum (paths keep the soup's points and triangles, to draw them).
-template <class Element, class Solver>
+template <class Element, class Tag, class Solver>
 void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& options, Run& run)
 {
   using FT = typename Solver::FT;
-  using Tag = CGAL::Parallel_if_available_tag;
   namespace DP = CGAL::DGG_VTP_3::parameters;
   const Clock::time_point t0 = Clock::now();
   // the locator (its mesh and AABB tree) is gone before the propagation
@@ -496,12 +496,6 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
     progress = std::ref(line.emplace(options.progress));
   const auto np = DP::max_distance(options.max_distance).accuracy(options.epsilon).callback(progress);
   const Clock::time_point t1 = Clock::now();
-  // the distances are the same bit for bit on any number of threads (and without TBB)
-#ifdef CGAL_LINKED_WITH_TBB
-  std::optional<tbb::global_control> limit;
-  if(options.threads > 0)
-    limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(options.threads));
-#endif
   if(!options.path_targets.empty())
   {
     tree.emplace(solver.template compute_shortest_path_tree<Tag>(q.sources, DP::targets(q.targets, np)));
@@ -549,21 +543,23 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
 }
 
 // The solver is built from the soup; vertices are sources and targets as vertices unless a point
-// is given.
-template <class Kernel>
-Run compute(dggvtp::Loaded_soup& soup, const Options& options)
+// is given. The preparation and the propagation run as `Tag` says (with_threads()); the solver and
+// the distances are the same bit for bit on any number of threads (and without TBB).
+template <class Kernel, class Tag>
+Run compute(dggvtp::Loaded_soup& soup, const Options& options, Tag tag)
 {
   using Solver = CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Kernel>;
   Run run;
+  run.threads = dggvtp::threads_of(tag);
   std::optional<Solver> solver;
   const Clock::time_point t0 = Clock::now();
-  run.seconds_make_mesh = dggvtp::make_solver(soup, solver);
+  run.seconds_make_mesh = dggvtp::make_solver<Tag>(soup, solver);
   run.seconds_prepare = seconds_since(t0) - run.seconds_make_mesh;
   run.faces = soup.triangles.size();
   if(options.has_points())
-    run_query<typename Solver::Face_location>(soup, *solver, options, run);
+    run_query<typename Solver::Face_location, Tag>(soup, *solver, options, run);
   else
-    run_query<std::size_t>(soup, *solver, options, run);
+    run_query<std::size_t, Tag>(soup, *solver, options, run);
   return run;
 }
 
@@ -727,6 +723,8 @@ int run_main(int argc, char** argv)
       if(!p.is_point && p.vertex >= soup.file_vertices)
         throw dggvtp::Input_error(std::string(what) + " " + std::to_string(p.vertex) + " is out of range (the mesh has " +
                                   std::to_string(soup.file_vertices) + " vertices)");
+  const double seconds_read = seconds_since(t0);
+  const Clock::time_point t_repair = Clock::now();
   dggvtp::Repair_record repaired;
   if(options.repair)
   {
@@ -737,20 +735,22 @@ int run_main(int argc, char** argv)
         if(!p.is_point)
           p.vertex = repaired.file_vertex(p.vertex, what);
   }
-  const double seconds_read = seconds_since(t0);
+  const double seconds_repair_soup = seconds_since(t_repair);
 
   Run run;
   try
   {
-    run = options.precision == "float" ? compute<CGAL::Simple_cartesian<float>>(soup, options)
-                                       : compute<CGAL::Exact_predicates_inexact_constructions_kernel>(soup, options);
+    dggvtp::with_threads(options.threads, [&](auto tag) {
+      run = options.precision == "float" ? compute<CGAL::Simple_cartesian<float>>(soup, options, tag)
+                                         : compute<CGAL::Exact_predicates_inexact_constructions_kernel>(soup, options, tag);
+    });
   }
   catch(const std::invalid_argument& e) // the library's documented preconditions
   {
     throw dggvtp::Input_error(dggvtp::with_repair_hint(e.what(), repair));
   }
   repaired.apply(run.distances.empty() ? nullptr : run.distances.data(), run.labels.empty() ? nullptr : run.labels.data());
-  const double seconds_load = seconds_read + run.seconds_make_mesh;
+  const double seconds_repair = seconds_repair_soup + run.seconds_make_mesh;
   if(!options.quiet)
     for(const std::string& line : soup.repairs)
       std::cerr << "warning: " << options.mesh << ": " << line << "\n";
@@ -809,8 +809,10 @@ int run_main(int argc, char** argv)
     std::fprintf(file.get(),
                  "{\"mesh\": %s, \"vertices\": %zu, \"faces\": %zu, \"source\": %s, \"sources\": %zu, "
                  "\"targets\": %zu, \"paths\": %zu, \"distance_limit\": %s, \"epsilon\": %.17g, "
-                 "\"precision\": \"%s\", \"threads\": %ld, \"seconds_load\": %.6f, \"seconds_prepare\": %.6f, "
-                 "\"seconds_locate\": %.6f, \"seconds_propagate\": %.6f, \"seconds_write\": %.6f, "
+                 "\"precision\": \"%s\", \"threads\": %ld, \"seconds_load\": %.6f, \"seconds_repair\": %.6f, "
+                 "\"seconds_prepare\": %.6f, \"seconds_locate\": %.6f, \"seconds_propagate\": %.6f, \"seconds_write\": %.6f, "
+                 "\"threads_per_stage\": {\"load\": 1, \"repair\": 1, \"prepare\": %zu, \"locate\": 1, "
+                 "\"propagate\": %zu, \"write\": 1}, "
                  "\"windows_created\": %zu, \"windows_peak\": %zu, "
                  "\"pseudo_sources\": %zu, \"vertices_popped\": %zu, \"vertices_reached\": %zu, "
                  "\"max_distance\": %.17g, \"peak_rss_mb\": %.1f}\n",
@@ -818,8 +820,9 @@ int run_main(int argc, char** argv)
                  first.is_point ? "null" : std::to_string(first.vertex).c_str(), options.sources.size(),
                  options.targets.size(), options.path_targets.size(),
                  std::isfinite(options.max_distance) ? number_text(options.max_distance).c_str() : "null",
-                 options.epsilon, options.precision.c_str(), options.threads, seconds_load, run.seconds_prepare,
-                 run.seconds_locate, run.seconds_propagate, seconds_write, s.windows_created, s.windows_peak,
+                 options.epsilon, options.precision.c_str(), options.threads, seconds_read, seconds_repair,
+                 run.seconds_prepare, run.seconds_locate, run.seconds_propagate, seconds_write, run.threads, run.threads,
+                 s.windows_created, s.windows_peak,
                  s.pseudo_sources, s.vertices_popped, s.vertices_reached, farthest, rss);
     file.commit();
   }
@@ -836,9 +839,12 @@ int run_main(int argc, char** argv)
         << "  " << sources << ", "
         << (options.epsilon > 0. ? "DGG-VTP epsilon " + std::to_string(options.epsilon) : std::string("exact (VTP)"))
         << ", " << options.precision << "\n"
-        << "  load " << seconds_load << " s, prepare " << run.seconds_prepare << " s, "
+        << "  load " << seconds_read << " s, "
+        << (options.repair || run.seconds_make_mesh > 0. ? "repair " + std::to_string(seconds_repair) + " s, " : std::string())
+        << "prepare " << run.seconds_prepare << " s, "
         << (options.has_points() ? "locate " + std::to_string(run.seconds_locate) + " s, " : std::string())
         << "propagate " << run.seconds_propagate << " s, write " << seconds_write << " s\n"
+        << "  prepared and propagated on " << run.threads << (run.threads == 1 ? " thread\n" : " threads\n")
         << "  windows created " << s.windows_created << ", peak " << s.windows_peak << ", pseudo-sources "
         << s.pseudo_sources << "\n";
     if(options.stops_early())

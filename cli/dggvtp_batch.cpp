@@ -32,6 +32,7 @@
 #include <dggvtp/output_paths.h>
 #include <dggvtp/query_places.h>
 #include <dggvtp/sparse_rows.h>
+#include <dggvtp/threads.h>
 #include <dggvtp/arguments.h>
 #include <dggvtp/single_value_options.h>
 #include <dggvtp/version.h>
@@ -110,15 +111,17 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
   --exact                exact distances (VTP algorithm); the default
   --epsilon E            DGG-VTP with accuracy E in [0, 1] (E = 0 is --exact)
   --precision P          double (default) or float: the number type of the computation
-  --threads T            threads per process, 0 = all cores (default 1): the sources are shared
-                         among them (fps:K: each propagation runs on them); same bytes for any T
+  --threads T            threads per process, 0 = all cores (default 1): the preparation runs on
+                         them, and the sources are shared among them (fps:K: each propagation
+                         runs on them); same bytes for any T
   --checkpoint DIR       where the rows written so far and the record of the done rows live
                          (default OUT.npy.checkpoint); the same command run again after a kill
                          computes only the missing rows; a different command (mesh, epsilon,
                          precision, dtype, sources) is refused; removed at the end
   --sources-output FILE  the source vertex of each row, one per line (useful with fps:K)
-  --stats FILE           one JSON object: sizes, rows computed and resumed, times, and per
-                         process its peak memory, CPU time and time on its own rows
+  --stats FILE           one JSON object: sizes, rows computed and resumed, the time of each stage
+                         (load, repair, prepare, compute, write, total) and the threads it used,
+                         and per process its peak memory, CPU time and time on its own rows
   --progress             rows done / total, rate and time left on stderr (the default when
                          stderr is a terminal; under mpirun, whose output is a pipe, ask for it)
   --quiet                no summary, no progress, no warnings but the one about unreachable
@@ -705,11 +708,13 @@ struct Prepared
   Row_function row;
   Rows_function rows;
   std::size_t faces = 0;
-  double seconds_make_mesh = 0., seconds_prepare = 0.;
+  double seconds_make_mesh = 0., seconds_prepare = 0.; // the input policy's repairs, the rest
+  std::size_t threads = 1; // that prepare the solver, and that --threads gives the rows
 };
 
+// the solver prepared on `threads` threads (0 = all cores), the same bits for any number
 template <class Kernel>
-Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, double max_distance)
+Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, double max_distance, long threads)
 {
   using Solver = CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Kernel>;
   Prepared prepared;
@@ -717,7 +722,10 @@ Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, doub
   const Clock::time_point t0 = Clock::now();
   try
   {
-    prepared.seconds_make_mesh = dggvtp::make_solver(*soup, *solver);
+    dggvtp::with_threads(threads, [&](auto tag) {
+      prepared.seconds_make_mesh = dggvtp::make_solver<decltype(tag)>(*soup, *solver);
+      prepared.threads = dggvtp::threads_of(tag);
+    });
   }
   catch(const std::invalid_argument& e)
   {
@@ -989,7 +997,8 @@ struct Phase_one
   std::vector<std::string> repairs;
   Sources sources;
   Prepared prepared;
-  double seconds_load = 0.;
+  double seconds_load = 0.;   // reading the file
+  double seconds_repair = 0.; // the input policy's repairs, if the soup needs them
 };
 
 int run_main(dggvtp::Communicator& comm, int argc, char** argv)
@@ -1013,13 +1022,15 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     one.file_vertices = one.soup->file_vertices;
     one.sources = read_sources(options.sources, one.file_vertices);
     dggvtp::npy_file_size(options.dtype, one.sources.rows, one.file_vertices); // too large: error now
-    const double seconds_read = seconds_since(t0);
+    one.seconds_load = seconds_since(t0);
+    // one thread per process where MPI allows no threads, as for the rows
+    const long threads = comm.allows_threads() ? options.threads : 1;
     one.prepared = options.precision == "float"
-                     ? prepare<CGAL::Simple_cartesian<float>>(one.soup, options.epsilon, options.max_distance)
+                     ? prepare<CGAL::Simple_cartesian<float>>(one.soup, options.epsilon, options.max_distance, threads)
                      : prepare<CGAL::Exact_predicates_inexact_constructions_kernel>(one.soup, options.epsilon,
-                                                                                    options.max_distance);
+                                                                                    options.max_distance, threads);
     one.repairs = one.soup->repairs;
-    one.seconds_load = seconds_read + one.prepared.seconds_make_mesh;
+    one.seconds_repair = one.prepared.seconds_make_mesh;
   });
   if(status != 0)
     return status;
@@ -1226,6 +1237,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   const std::vector<double> computed_per_rank = comm.gather(double(computed));
   const std::vector<double> unreachable_rows = comm.gather(double(unreachable.rows.load()));
   const std::vector<double> unreachable_most = comm.gather(double(unreachable.most.load()));
+  const Clock::time_point t_write = Clock::now();
   status = collectively(comm, [&] {
     if(!root)
       return;
@@ -1254,6 +1266,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   });
   if(status != 0 || !root)
     return status;
+  const double seconds_write = seconds_since(t_write);
 
   std::size_t computed_total = 0;
   for(double c : computed_per_rank)
@@ -1293,13 +1306,16 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
       return std::snprintf(text, size,
                   "{\"mesh\": %s, \"vertices\": %zu, \"faces\": %zu, \"rows\": %zu, \"rows_computed\": %zu, "
                   "\"rows_resumed\": %zu, \"ranks\": %d, \"threads\": %ld, \"epsilon\": %.17g, \"precision\": \"%s\", "
-                  "\"dtype\": \"%s\", \"seconds_load\": %.6f, \"seconds_prepare\": %.6f, \"seconds_compute\": %.6f, "
-                  "\"seconds_total\": %.6f, \"peak_rss_mb\": [%s], \"cpu_seconds\": [%s], "
+                  "\"dtype\": \"%s\", \"seconds_load\": %.6f, \"seconds_repair\": %.6f, \"seconds_prepare\": %.6f, "
+                  "\"seconds_compute\": %.6f, \"seconds_write\": %.6f, \"seconds_total\": %.6f, "
+                  "\"threads_per_stage\": {\"load\": 1, \"repair\": 1, \"prepare\": %zu, \"compute\": %zu, \"write\": 1}, "
+                  "\"peak_rss_mb\": [%s], \"cpu_seconds\": [%s], "
                   "\"seconds_compute_per_rank\": [%s]}\n",
                   json_string(options.mesh).c_str(), one.file_vertices, one.prepared.faces, sources.rows,
                   computed_total, already_done, comm.size(), options.threads, options.epsilon,
-                  options.precision.c_str(), dtype, one.seconds_load, one.prepared.seconds_prepare, seconds_compute,
-                  seconds_total, rss_list.c_str(), json_list(cpu, "%.3f").c_str(),
+                  options.precision.c_str(), dtype, one.seconds_load, one.seconds_repair, one.prepared.seconds_prepare,
+                  seconds_compute, seconds_write, seconds_total, one.prepared.threads, one.prepared.threads,
+                  rss_list.c_str(), json_list(cpu, "%.3f").c_str(),
                   json_list(compute_seconds, "%.3f").c_str());
     };
     std::vector<char> text(std::size_t(format(nullptr, 0)) + 1);
@@ -1316,8 +1332,10 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
               << (options.threads == 0 ? std::string("all cores'") : std::to_string(options.threads))
               << (options.threads == 1 ? " thread" : " threads") << ": computed " << computed_total << " rows"
               << (already_done > 0 ? " (" + std::to_string(already_done) + " were done before)" : std::string()) << "\n"
-              << "  load " << one.seconds_load << " s, prepare " << one.prepared.seconds_prepare << " s, rows "
-              << seconds_compute << " s, total " << seconds_total << " s\n"
+              << "  load " << one.seconds_load << " s, "
+              << (one.seconds_repair > 0. ? "repair " + std::to_string(one.seconds_repair) + " s, " : std::string())
+              << "prepare " << one.prepared.seconds_prepare << " s, rows " << seconds_compute << " s, write "
+              << seconds_write << " s, total " << seconds_total << " s\n"
               << "  peak memory per process " << rss_list << " MB\n"
               << "  wrote " << options.output << "\n";
   return 0;

@@ -16,13 +16,10 @@
 #include <dggvtp/query_places.h>
 #include <dggvtp/repair.h>
 #include <dggvtp/sparse_rows.h>
+#include <dggvtp/threads.h>
 
 #include <CGAL/DGG_VTP_3.h>
 #include <CGAL/Simple_cartesian.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
 
 #include <boost/range/irange.hpp>
 
@@ -82,24 +79,6 @@ public:
   virtual Paths shortest_paths(const Query& query, std::vector<Moved_point>& moved) const = 0;
 };
 
-// Runs `f` with the concurrency tag and the TBB thread limit of `threads` (1: sequential). TBB's
-// limit is process-wide: concurrent calls share the smallest one.
-template <class F>
-void with_threads(long threads, F f)
-{
-  if(threads == 1)
-  {
-    f(CGAL::Sequential_tag());
-    return;
-  }
-#ifdef CGAL_LINKED_WITH_TBB
-  std::optional<tbb::global_control> limit;
-  if(threads > 0)
-    limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-#endif
-  f(CGAL::Parallel_if_available_tag());
-}
-
 template <class Kernel>
 class Soup_solver final : public Solver_interface
 {
@@ -109,16 +88,17 @@ class Soup_solver final : public Solver_interface
   using Face = std::array<std::uint32_t, 3>;
 
 public:
-  // `faces`: F, in its corner order (the soup's triangles may have lost some); throws Input_error
-  // for a soup the input policy refuses
-  Soup_solver(Loaded_soup&& soup, std::vector<Face>&& faces, const Repair_option& repair)
+  // `faces`: F, in its corner order (the soup's triangles may have lost some); prepared on
+  // `threads` threads (0: all cores), the same bits for any number; throws Input_error for a soup
+  // the input policy refuses
+  Soup_solver(Loaded_soup&& soup, std::vector<Face>&& faces, const Repair_option& repair, long threads)
     : m_soup(std::move(soup)), m_faces(std::move(faces))
   {
     if(repair.on)
       m_record = repair_soup(m_soup, repair);
     try
     {
-      make_solver(m_soup, m_solver);
+      with_threads(threads, [&](auto tag) { make_solver<decltype(tag)>(m_soup, m_solver); });
     }
     catch(const std::invalid_argument& e) // the library's documented preconditions
     {
@@ -392,12 +372,15 @@ private:
 };
 
 inline std::unique_ptr<Solver_interface> make_soup_solver(Loaded_soup&& soup, std::vector<std::array<std::uint32_t, 3>>&& faces,
-                                                          const std::string& precision, const Repair_option& repair)
+                                                          const std::string& precision, const Repair_option& repair,
+                                                          long threads)
 {
   if(precision == "float")
-    return std::make_unique<Soup_solver<CGAL::Simple_cartesian<float>>>(std::move(soup), std::move(faces), repair);
+    return std::make_unique<Soup_solver<CGAL::Simple_cartesian<float>>>(std::move(soup), std::move(faces), repair,
+                                                                        threads);
   return std::make_unique<Soup_solver<CGAL::Exact_predicates_inexact_constructions_kernel>>(std::move(soup),
-                                                                                            std::move(faces), repair);
+                                                                                            std::move(faces), repair,
+                                                                                            threads);
 }
 
 } // namespace python

@@ -95,6 +95,9 @@ prints a warning for them.
 
 const char* const init = R"(Prepares the mesh (V, F) for queries; see the class's documentation.
 
+threads: threads of the preparation (TBB), 0 = all cores, default 1 (sequential); the prepared
+solver, and so every result, is the same bit for bit for any number.
+
 Raises ValueError for arrays of the wrong shape or kind of numbers, an index out of range, a
 face using a vertex twice (without repair), a coordinate that is not finite, or a mesh the input
 policy refuses.

@@ -264,22 +264,25 @@ PYBIND11_MODULE(_dggvtp, m)
 
   py::class_<Geodesic_solver> solver(m, "GeodesicSolver", doc::solver);
   solver
-    .def(py::init([](const Array_like& V, const Array_like& F, const std::string& precision, bool repair) {
+    .def(py::init([](const Array_like& V, const Array_like& F, const std::string& precision, bool repair,
+                     long threads) {
            if(precision != "double" && precision != "float")
              bad("precision must be 'double' or 'float', not '" + precision + "'");
+           if(threads < 0)
+             bad("threads must be >= 0 (0: all cores)");
            std::vector<std::array<std::uint32_t, 3>> faces;
            dggvtp::Loaded_soup soup = soup_of_arrays(V, F, repair_option(repair), faces);
            Geodesic_solver s;
            s.precision = precision;
            {
              py::gil_scoped_release unlocked;
-             s.solver = make_soup_solver(std::move(soup), std::move(faces), precision, repair_option(repair));
+             s.solver = make_soup_solver(std::move(soup), std::move(faces), precision, repair_option(repair), threads);
            }
            for(const std::string& line : s.solver->repairs())
              warn("GeodesicSolver(V, F): " + line);
            return s;
          }),
-         "V"_a, "F"_a, "precision"_a = "double", py::kw_only(), "repair"_a = false, doc::init)
+         "V"_a, "F"_a, "precision"_a = "double", py::kw_only(), "repair"_a = false, "threads"_a = 1, doc::init)
     .def_property_readonly("num_vertices", &Geodesic_solver::vertices, doc::num_vertices)
     .def_property_readonly("num_faces", [](const Geodesic_solver& s) { return s.solver->number_of_triangles(); },
                            doc::num_faces)

@@ -125,6 +125,20 @@ def test_threads_same_bits(solvers):
         assert same_bits(solver.distances(0, epsilon=1e-4, threads=threads), one)
 
 
+def test_preparation_threads_same_bits(solvers):
+    # the solver prepared on several threads is the sequential one: the same distances, bit for bit
+    V, F = dggvtp.read_mesh(mesh("bunny.ply"))
+    one = solvers("bunny.ply")
+    for threads in (0, 2):
+        solver = dggvtp.GeodesicSolver(V, F, threads=threads)
+        assert solver.num_faces == one.num_faces
+        for s, epsilon in ((0, 0.0), (20000, 1e-4)):
+            assert same_bits(solver.distances(s, epsilon=epsilon), one.distances(s, epsilon=epsilon))
+    assert same_bits(dggvtp.geodesic_distances(V, F, 7, threads=2), one.distances(7))
+    with pytest.raises(ValueError, match="threads"):
+        dggvtp.GeodesicSolver(V, F, threads=-1)
+
+
 def test_array_likes_and_new_buffers(solvers):
     V, F = dggvtp.read_mesh(mesh("pinion.ply"))
     solver = dggvtp.GeodesicSolver(V.tolist(), F.astype(np.int32))

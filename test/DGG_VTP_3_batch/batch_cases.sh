@@ -138,9 +138,15 @@ all_sources_and_threads)
   expect_shape one.npy "20 20 float64"; same_as_dggvtp one.npy grid.obj "$(seq 0 19)"
   lion_sources > l.txt
   run "$lion" --sources l.txt --output t1.npy --threads 1 --quiet; [ "$rc" -eq 0 ] || fail "$err"
-  run "$lion" --sources l.txt --output t2.npy --threads 2 --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  run "$lion" --sources l.txt --output t2.npy --threads 2 --stats s2.json --quiet; [ "$rc" -eq 0 ] || fail "$err"
   cmp -s t1.npy t2.npy || fail "2 threads do not give the bytes of 1"
   same_as_dggvtp t2.npy "$lion" "$(head -3 l.txt)"
+  # every stage timed, with its threads (the preparation's and the rows' as TBB allows: 1 or 2)
+  for key in seconds_load seconds_repair seconds_prepare seconds_compute seconds_write seconds_total; do
+    grep -q "\"$key\": [0-9]" s2.json || fail "stats lack $key: $(cat s2.json)"
+  done
+  grep -Eq '"threads_per_stage": \{"load": 1, "repair": 1, "prepare": [12], "compute": [12], "write": 1\}' s2.json \
+    || fail "stats: threads per stage: $(cat s2.json)"
   ;;
 mpi_ranks_and_threads)
   # R = 1, 2, 3 ranks x 1, 2 threads: the bytes of one process, which are dggvtp's rows

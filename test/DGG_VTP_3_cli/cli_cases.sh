@@ -194,7 +194,8 @@ case $case in
     [ "$(wc -l < "$work/d.txt")" -eq 2930 ] || fail "not one line per vertex"
     [ "$(head -1 "$work/d.txt")" = 0 ] || fail "the source is not at 0"
     grep -q -v '^[0-9.e+-]*$' "$work/d.txt" && fail "a distance is not a finite number"
-    for key in vertices faces source epsilon precision threads seconds_load seconds_propagate \
+    for key in vertices faces source epsilon precision threads seconds_load seconds_repair seconds_prepare \
+               seconds_locate seconds_propagate seconds_write threads_per_stage \
                windows_created windows_peak pseudo_sources vertices_popped vertices_reached peak_rss_mb; do
       grep -q "\"$key\":" "$work/s.json" || fail "stats lack $key"
     done
@@ -217,6 +218,10 @@ case $case in
       for t in 1 2 0; do
         run "$meshes/lion_head.ply" --quiet $mode --threads $t --output "$work/d$t.txt" --stats "$work/s$t.json"; expect_rc 0
         grep -q "\"threads\": $t," "$work/s$t.json" || fail "stats: threads is not $t"
+        # the preparation and the propagation on the threads TBB allows (1 when --threads 1)
+        if [ "$t" = 1 ]; then per='"prepare": 1, "locate": 1, "propagate": 1,'; else per='"prepare": [0-9]+, "locate": 1, "propagate": [0-9]+,'; fi
+        grep -Eq "\"threads_per_stage\": \{\"load\": 1, \"repair\": 1, $per \"write\": 1\}" "$work/s$t.json" \
+          || fail "stats: threads per stage: $(cat "$work/s$t.json")"
       done
       cmp -s "$work/d1.txt" "$work/d2.txt" || fail "$mode: --threads 2 differs from --threads 1"
       cmp -s "$work/d1.txt" "$work/d0.txt" || fail "$mode: --threads 0 differs from --threads 1"

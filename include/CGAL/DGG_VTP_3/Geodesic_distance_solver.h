@@ -143,6 +143,16 @@ public:
    *                    `std::size_t` as value type}
    *     \cgalParamDefault{an automatically indexed internal map}
    *   \cgalParamNEnd
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::concurrency_tag}
+   *     \cgalParamDescription{how the preparation runs: with `CGAL::Parallel_tag` its loops over
+   *                           faces and vertices are shared among TBB's threads (needs
+   *                           `CGAL_LINKED_WITH_TBB`); walking `tm` stays on the calling thread.
+   *                           The prepared solver, and so every distance, is the same bit for bit
+   *                           for any tag and number of threads, and so is the error thrown for
+   *                           input refused. One thread with an `FT` other than `float` and `double`}
+   *     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`, a value}
+   *     \cgalParamDefault{`CGAL::Sequential_tag()`}
+   *   \cgalParamNEnd
    * \cgalNamedParamsEnd
    *
    * \throws std::invalid_argument if a face is not a triangle, a coordinate is not finite, the
@@ -359,17 +369,18 @@ private:
   template <class NamedParameters>
   static Core prepare(const TriangleMesh& tm, const NamedParameters& np)
   {
+    using Tag = typename Core::template Preparation_tag<NamedParameters>;
     const Vertex_index_map vim = get_initialized_vertex_index_map(tm, np);
     const Face_index_map fim = get_initialized_face_index_map(tm, np);
     typename Core::Mesh mesh;
-    const std::vector<std::uint32_t> order = internal::unfold_triangle_mesh(
+    const std::vector<std::uint32_t> order = internal::unfold_triangle_mesh<Tag>(
       tm,
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                    get_const_property_map(CGAL::vertex_point, tm)),
       vim, fim,
       parameters::choose_parameter<Traits>(parameters::get_parameter(np, internal_np::geom_traits)),
       mesh);
-    return Core(Numbering(tm, vim, fim), std::move(mesh), order);
+    return Core(Tag(), Numbering(tm, vim, fim), std::move(mesh), order);
   }
 
   Core m_core; // the prepared mesh and the queries, on the numbers of the index maps

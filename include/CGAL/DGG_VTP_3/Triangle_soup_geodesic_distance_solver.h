@@ -97,6 +97,12 @@ public:
    *     \cgalParamType{a model of `DGGVTPTraits_3`}
    *     \cgalParamDefault{`GeomTraits()`}
    *   \cgalParamNEnd
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::concurrency_tag}
+   *     \cgalParamDescription{as for `Geodesic_distance_solver`; the points are read in parallel
+   *                           too, and so are the triangles if `TriangleRange` is random access}
+   *     \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`, a value}
+   *     \cgalParamDefault{`CGAL::Sequential_tag()`}
+   *   \cgalParamNEnd
    * \cgalNamedParamsEnd
    *
    * \throws std::invalid_argument for what the constructor of `Geodesic_distance_solver` refuses,
@@ -175,11 +181,12 @@ private:
   static Core prepare(const PointRange& points, const TriangleRange& triangles, const NamedParameters& np)
   {
     using Point = typename std::iterator_traits<decltype(std::begin(points))>::value_type;
+    using Tag = typename Core::template Preparation_tag<NamedParameters>;
     typename Core::Mesh mesh;
     const auto pm =
       parameters::choose_parameter<Identity_property_map<Point>>(parameters::get_parameter(np, internal_np::point_map));
     const auto gt = parameters::choose_parameter<GeomTraits>(parameters::get_parameter(np, internal_np::geom_traits));
-    const std::vector<std::uint32_t> order = internal::unfold_triangle_soup(points, triangles, pm, gt, mesh);
+    const std::vector<std::uint32_t> order = internal::unfold_triangle_soup<Tag>(points, triangles, pm, gt, mesh);
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::copy_of_t>::value)
     {
       const auto at = [&](std::size_t i) {
@@ -191,7 +198,7 @@ private:
         internal::copy_groups(parameters::get_parameter(np, internal_np::copy_of_t()), mesh.number_of_vertices(), at),
         mesh);
     }
-    return Core(internal::Index_numbering(mesh.number_of_vertices(), mesh.number_of_faces()), std::move(mesh), order);
+    return Core(Tag(), internal::Index_numbering(mesh.number_of_vertices(), mesh.number_of_faces()), std::move(mesh), order);
   }
 
   Core m_core; // the prepared soup and the queries

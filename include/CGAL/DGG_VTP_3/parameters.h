@@ -36,6 +36,7 @@ struct targets_t {};
 struct target_distances_t {};
 struct nearest_source_map_t {};
 struct copy_of_t {};
+struct concurrency_tag_t {};
 
 } // namespace internal_np
 
@@ -80,6 +81,10 @@ CGAL_DGG_VTP_3_NAMED_PARAMETER(nearest_source_map)
 /// triangles and a vertex where fans meet): paths go from one copy to the others at no cost, and
 /// across an edge between copies into every sheet that has it.
 CGAL_DGG_VTP_3_NAMED_PARAMETER(copy_of)
+/// The preparation of a solver's constructor on several threads: `CGAL::Parallel_tag` (TBB),
+/// `CGAL::Parallel_if_available_tag` or `CGAL::Sequential_tag`, as a value
+/// (`concurrency_tag(CGAL::Parallel_tag())`). CGAL names it so from 6.0 on.
+CGAL_DGG_VTP_3_NAMED_PARAMETER(concurrency_tag)
 
 #undef CGAL_DGG_VTP_3_NAMED_PARAMETER
 

@@ -21,6 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
@@ -252,18 +253,22 @@ inline std::vector<std::size_t> copies_of_points(const Loaded_soup& soup)
 
 } // namespace internal
 
-// A solver of the soup's triangles (a Triangle_soup_geodesic_distance_solver), the copies of a
-// file vertex made by repairs given as one point (copy_of). Throws std::invalid_argument as the
-// solver does.
-template <class Solver>
+// A solver of the soup's triangles (a Triangle_soup_geodesic_distance_solver), prepared as
+// `ConcurrencyTag` says, the copies of a file vertex made by repairs given as one point (copy_of).
+// Throws std::invalid_argument as the solver does.
+template <class Solver, class ConcurrencyTag>
 Solver make_soup_solver(const Loaded_soup& soup)
 {
   using Point = typename Solver::Traits::Point_3;
   using FT = typename Solver::Traits::FT;
-  const auto make = [&soup](const auto& points) {
+  const auto np = CGAL::DGG_VTP_3::parameters::concurrency_tag(ConcurrencyTag());
+  const auto make = [&soup, &np](const auto& points) {
     if(soup.file_vertex_of.size() == soup.file_vertices)
-      return Solver(points, soup.triangles);
-    return Solver(points, soup.triangles, CGAL::DGG_VTP_3::parameters::copy_of(internal::copies_of_points(soup)));
+      return Solver(points, soup.triangles, np);
+    using Copies = std::vector<std::size_t>;
+    return Solver(points, soup.triangles,
+                  CGAL::Named_function_parameters<Copies, CGAL::DGG_VTP_3::internal_np::copy_of_t, std::decay_t<decltype(np)>>(
+                    internal::copies_of_points(soup), np));
   };
   if constexpr(std::is_same<Point, Loaded_soup::Point>::value)
     return make(soup.points);
@@ -374,16 +379,17 @@ void repair_into_triangles(Loaded_soup& soup)
 // triangle soup goes to the solver as it is. Any other soup (polygons, inconsistent orientations,
 // edges of more than two faces, vertices where several fans meet, or input the solver refuses)
 // takes the path of repairs through a Surface_mesh, which accepts, repairs or refuses it, and goes
-// to the solver as the mesh's triangles. Returns the seconds spent on repairs (part of loading,
-// not of preparing). Throws Input_error or std::invalid_argument for input it refuses.
-template <class Solver>
+// to the solver as the mesh's triangles. Returns the seconds spent on repairs (not on preparing).
+// The solver is prepared as `ConcurrencyTag` says, the repairs on this thread. Throws Input_error
+// or std::invalid_argument for input it refuses.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class Solver>
 double make_solver(Loaded_soup& soup, std::optional<Solver>& solver)
 {
   if(soup.polygons.empty())
   {
     try
     {
-      solver.emplace(make_soup_solver<Solver>(soup));
+      solver.emplace(make_soup_solver<Solver, ConcurrencyTag>(soup));
       if(solver->number_of_non_manifold_vertices() == 0)
         return 0.;
       solver.reset();
@@ -395,7 +401,7 @@ double make_solver(Loaded_soup& soup, std::optional<Solver>& solver)
   const auto t0 = std::chrono::steady_clock::now();
   repair_into_triangles<typename Solver::Traits>(soup);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  solver.emplace(make_soup_solver<Solver>(soup));
+  solver.emplace(make_soup_solver<Solver, ConcurrencyTag>(soup));
   return seconds;
 }
 

@@ -27,9 +27,10 @@ def geodesic_distances(V: Any, F: Any, sources: Any = None, *, precision: str = 
                        **options: Any) -> Any:
     """Geodesic distance of every vertex of the mesh (V, F) to the nearest source, in one call.
 
-    GeodesicSolver(V, F, precision, repair=repair).distances(sources, **options), the same values:
-    the options are those of GeodesicSolver.distances (points, face_points, epsilon, max_distance,
-    threads, return_labels). For several queries on one mesh, keep a GeodesicSolver: it prepares
-    the mesh once.
+    GeodesicSolver(V, F, precision, repair=repair, threads=threads).distances(sources, **options),
+    the same values: the options are those of GeodesicSolver.distances (points, face_points,
+    epsilon, max_distance, threads, return_labels); threads serves the preparation too. For several
+    queries on one mesh, keep a GeodesicSolver: it prepares the mesh once.
     """
-    return GeodesicSolver(V, F, precision, repair=repair).distances(sources, **options)
+    threads = options.get("threads", 1)
+    return GeodesicSolver(V, F, precision, repair=repair, threads=threads).distances(sources, **options)

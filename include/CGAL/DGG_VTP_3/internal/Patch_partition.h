@@ -16,6 +16,7 @@
 
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/for_each_block.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -36,7 +37,9 @@ public:
   using Index = std::uint32_t;
 
   Patch_partition() = default;
-  explicit Patch_partition(const Unfolded_mesh<FT>& mesh)
+  // the vertices' owners computed as `ConcurrencyTag` says (for_each_block()), the same whatever it is
+  template <class ConcurrencyTag>
+  Patch_partition(const Unfolded_mesh<FT>& mesh, ConcurrencyTag)
   {
     using T = Tuning<FT>;
     const std::size_t nf = mesh.number_of_faces();
@@ -49,17 +52,20 @@ public:
     m_owner.assign(nv, 0);
     m_border_begin.assign(m_patches + 1, 0);
     std::vector<char> on_border(nv, 0);
+    for_each_block<ConcurrencyTag>(nv, [&](std::size_t v0, std::size_t v1) {
+      for(Index v = Index(v0); v < v1; ++v)
+      {
+        if(mesh.corners_begin(v) == mesh.corners_end(v))
+          continue;
+        m_owner[v] = patch_of_face(Unfolded_mesh<FT>::face(*mesh.corners_begin(v)));
+        for(const Index* c = mesh.corners_begin(v); c != mesh.corners_end(v); ++c)
+          if(patch_of_face(Unfolded_mesh<FT>::face(*c)) != m_owner[v])
+            on_border[v] = 1;
+      }
+    });
     for(Index v = 0; v < nv; ++v)
-    {
-      if(mesh.corners_begin(v) == mesh.corners_end(v))
-        continue;
-      m_owner[v] = patch_of_face(Unfolded_mesh<FT>::face(*mesh.corners_begin(v)));
-      for(const Index* c = mesh.corners_begin(v); c != mesh.corners_end(v); ++c)
-        if(patch_of_face(Unfolded_mesh<FT>::face(*c)) != m_owner[v])
-          on_border[v] = 1;
       if(on_border[v])
         ++m_border_begin[m_owner[v] + 1];
-    }
     for(std::size_t p = 0; p < m_patches; ++p)
       m_border_begin[p + 1] += m_border_begin[p];
     m_border.resize(m_border_begin[m_patches]);
@@ -68,7 +74,7 @@ public:
       if(on_border[v])
         m_border[fill[m_owner[v]]++] = v;
 
-    FT total(0);
+    FT total(0); // in one order, whatever the tag: a sum in floating point depends on it
     for(Index h = 0; h < mesh.number_of_halfedges(); ++h)
       total += mesh.length(h);
     m_band = mesh.number_of_halfedges() == 0 ? number<FT>(0) : T::band_in_edges() * total / number<FT>(mesh.number_of_halfedges());

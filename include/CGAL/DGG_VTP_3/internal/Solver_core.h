@@ -22,6 +22,7 @@
 #include <CGAL/DGG_VTP_3/internal/Query_builder.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
+#include <CGAL/DGG_VTP_3/internal/for_each_block.h>
 #include <CGAL/DGG_VTP_3/internal/nearest_sources.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 
@@ -68,13 +69,25 @@ public:
   // where a target of a query is: a vertex (true) or the number of a point target
   using Place = std::pair<bool, Index>;
 
+  // The tag the preparation runs with: the named parameter concurrency_tag (Sequential_tag if not
+  // given), Sequential_tag for an exact number type. A named parameter, not a template parameter
+  // as for the queries: a constructor takes no explicit template arguments, and so the tag goes
+  // with the preparation's other options (as CGAL 6's autorefine_triangle_soup() takes it).
+  template <class NamedParameters>
+  using Preparation_tag = typename Effective_concurrency_tag<
+    typename internal_np::Lookup_named_param_def<internal_np::concurrency_tag_t, NamedParameters, Sequential_tag>::type,
+    Computation_FT>::type;
+
   // `order`: new face i of `mesh` is the face of number order[i] (see unfold_triangles())
-  Solver_core(Numbering numbering, Mesh&& mesh, const std::vector<Index>& order)
-    : m_numbering(std::move(numbering)), m_mesh(std::move(mesh)), m_partition(m_mesh), m_user_face(order)
+  template <class ConcurrencyTag>
+  Solver_core(ConcurrencyTag tag, Numbering numbering, Mesh&& mesh, const std::vector<Index>& order)
+    : m_numbering(std::move(numbering)), m_mesh(std::move(mesh)), m_partition(m_mesh, tag), m_user_face(order)
   {
     m_internal_face.resize(order.size());
-    for(std::size_t f = 0; f < order.size(); ++f)
-      m_internal_face[order[f]] = Index(f);
+    for_each_block<ConcurrencyTag>(order.size(), [&](std::size_t f0, std::size_t f1) {
+      for(std::size_t f = f0; f < f1; ++f)
+        m_internal_face[order[f]] = Index(f);
+    });
   }
 
   std::size_t number_of_vertices() const { return m_numbering.number_of_vertices(); }

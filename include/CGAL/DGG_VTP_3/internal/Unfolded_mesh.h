@@ -14,8 +14,10 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Default_init_allocator.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Vertex_directions.h>
+#include <CGAL/DGG_VTP_3/internal/for_each_block.h>
 #include <CGAL/DGG_VTP_3/internal/mesh_combinatorics.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
@@ -25,6 +27,7 @@
 
 #include <cmath>
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
@@ -116,22 +119,22 @@ public:
   Index next_twin(Index h) const { return m_next_twin.empty() ? h : m_next_twin[h]; }
   bool has_face_across(Index h) const { return m_opposite[h] != no_halfedge || next_twin(h) != h; }
 
-  template <class FT_>
-  friend std::vector<std::uint32_t> unfold_triangles(std::vector<FT_> xyz, std::vector<std::uint32_t> corner_vertex,
-                                                     std::vector<std::uint32_t> opposite, Unfolded_mesh<FT_>& out);
+  template <class ConcurrencyTag, class FT_>
+  friend std::vector<std::uint32_t> unfold_triangles(std::vector<FT_> xyz, Uninitialized_vector<std::uint32_t> corner_vertex,
+                                                     Uninitialized_vector<std::uint32_t> opposite, Unfolded_mesh<FT_>& out);
   template <class FT_>
   friend void link_copies(const std::vector<std::uint32_t>& group, Unfolded_mesh<FT_>& mesh);
 
 private:
-  std::vector<Index> m_corner_vertex;       // 3F: vertex at each corner
-  std::vector<Index> m_opposite;            // 3F: opposite corner halfedge, or no_halfedge
-  std::vector<FT> m_length;                 // 3F: length of each halfedge
-  std::vector<FT> m_apex_x;                 // 3F: abscissa of the apex in each halfedge's frame
-  std::vector<FT> m_twice_area;             // F: twice the area (the apex's height times the length)
+  Uninitialized_vector<Index> m_corner_vertex; // 3F: vertex at each corner
+  Uninitialized_vector<Index> m_opposite;   // 3F: opposite corner halfedge, or no_halfedge
+  Uninitialized_vector<FT> m_length;        // 3F: length of each halfedge
+  Uninitialized_vector<FT> m_apex_x;        // 3F: abscissa of the apex in each halfedge's frame
+  Uninitialized_vector<FT> m_twice_area;    // F: twice the area (the apex's height times the length)
   std::vector<FT> m_corner_dot;             // 3F in exact types (else empty): ab . ac at each corner
   std::vector<Index> m_vertex_corners_begin;// V+1: CSR offsets into m_vertex_corners
-  std::vector<Index> m_vertex_corners;      // 3F: corners grouped by vertex, in turning order
-  std::vector<Index> m_corner_rank;         // 3F: position of each corner among its vertex's
+  Uninitialized_vector<Index> m_vertex_corners; // 3F: corners grouped by vertex, in turning order
+  Uninitialized_vector<Index> m_corner_rank; // 3F: position of each corner among its vertex's
   std::vector<char> m_singular;             // V: border or non-manifold vertex
   std::vector<char> m_exact_pseudo_source;  // V: pseudo-source of the exact (VTP) propagation
   std::size_t m_non_manifold_vertices = 0;
@@ -195,27 +198,30 @@ private:
 // and the opposite of each halfedge (`no_halfedge` on the border), faces in the user's order;
 // checks the geometry. With no opposites given (a triangle soup), each halfedge a->b is matched
 // with the one halfedge b->a, if any. Returns the order of the faces: new face i is the user's
-// face order[i].
-template <class FT>
-std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std::uint32_t> corner_vertex,
-                                            std::vector<std::uint32_t> opposite, Unfolded_mesh<FT>& out)
+// face order[i]. Each step is a loop over faces or vertices whose iterations write only their own
+// face's or vertex's data, run as `ConcurrencyTag` says (for_each_block()): the mesh is the same bit
+// for bit whatever the tag and the number of threads (it must be `Sequential_tag` for an exact `FT`,
+// whose numbers share their representations between copies).
+template <class ConcurrencyTag, class FT>
+std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, Uninitialized_vector<std::uint32_t> corner_vertex,
+                                            Uninitialized_vector<std::uint32_t> opposite, Unfolded_mesh<FT>& out)
 {
   using Index = typename Unfolded_mesh<FT>::Index;
   constexpr Index no_halfedge = Unfolded_mesh<FT>::no_halfedge;
   const std::size_t nv = xyz.size() / 3;
   const std::size_t nf = corner_vertex.size() / 3;
   double extent = 0.;
-  const std::vector<Index> order = faces_in_space_order(xyz, corner_vertex, extent);
+  const std::vector<Index> order = faces_in_space_order<ConcurrencyTag>(xyz, corner_vertex, extent);
   // otherwise every edge would be refused as too short for a mesh "inf across"
   if(!std::isfinite(extent))
     throw std::invalid_argument("the vertices span more than the largest finite double: "
                                 "scale the mesh down (distances scale with it)");
-  reorder_faces(order, corner_vertex, opposite);
+  reorder_faces<ConcurrencyTag>(order, corner_vertex, opposite);
   out.m_corner_vertex.swap(corner_vertex);
   // corners around each vertex (CSR); the faces' spatial order makes walking them cache-friendly
-  group_corners_by_vertex(out.m_corner_vertex, nv, out.m_vertex_corners_begin, out.m_vertex_corners);
+  group_corners_by_vertex<ConcurrencyTag>(out.m_corner_vertex, nv, out.m_vertex_corners_begin, out.m_vertex_corners);
   if(opposite.empty())
-    opposite = matched_halfedges(out.m_corner_vertex, out.m_vertex_corners_begin, out.m_vertex_corners, order);
+    opposite = matched_halfedges<ConcurrencyTag>(out.m_corner_vertex, out.m_vertex_corners_begin, out.m_vertex_corners, order);
   out.m_opposite.swap(opposite);
   out.m_length.resize(3 * nf);
   out.m_apex_x.resize(3 * nf);
@@ -226,76 +232,78 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   // unfold each triangle onto each of its three edges; the area comes from the two shortest edges
   // (errors name the face by the user's index)
   const double shortest_accepted = CGAL::to_double(Tuning<FT>::min_relative_edge()) * extent;
-  Shared_square_roots<FT> root;
-  for(std::size_t fi = 0; fi < nf; ++fi)
-  {
-    const std::size_t user_face = order[fi];
-    FT p[3][3];
-    for(int k = 0; k < 3; ++k)
-      for(int c = 0; c < 3; ++c)
-        p[k][c] = xyz[3 * out.m_corner_vertex[3 * fi + k] + c];
-    const auto degenerate = [user_face] {
-      return std::invalid_argument("face " + std::to_string(user_face) + " is degenerate (zero length edge or zero area)");
-    };
-    const auto too_large = [user_face] {
-      return std::invalid_argument("face " + std::to_string(user_face) +
-                                   " is too large for the number type (its squared edge lengths or area overflow): "
-                                   "scale the mesh down (distances scale with it)");
-    };
-    FT twice_area(0), longest(0);
-    for(int k = 0; k < 3; ++k)
+  Shared_square_roots<FT> root; // keeps its roots only in an exact type, whose loops run on one thread
+  for_each_block<ConcurrencyTag>(nf, [&](std::size_t f0, std::size_t f1) {
+    for(std::size_t fi = f0; fi < f1; ++fi)
     {
-      const FT* a = p[k];
-      const FT* b = p[(k + 1) % 3];
-      const FT* c = p[(k + 2) % 3];
-      const FT ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-      const FT ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-      const FT len = root(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
-      const Index hi = Index(3 * fi + k);
-      out.m_length[hi] = len;
-      const FT corner_dot = ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2];
-      out.m_apex_x[hi] = corner_dot / len;
-      if constexpr(Number_type_math<FT>::is_exact)
-        out.m_corner_dot[hi] = corner_dot;
-      if(!CGAL::is_finite(len))
-        throw too_large();
-      if(!(len > FT(0)) || !CGAL::is_finite(out.m_apex_x[hi]))
-        throw degenerate();
-      if(CGAL::to_double(len) < shortest_accepted)
-        throw std::invalid_argument("face " + std::to_string(user_face) + " has an edge of length " +
-                                    to_short_string(CGAL::to_double(len)) + " in a mesh " + to_short_string(extent) +
-                                    " across: distances on this mesh cannot tell so short an edge from rounding (at least " +
-                                    to_short_string(CGAL::to_double(Tuning<FT>::min_relative_edge())) +
-                                    " times the mesh's size is accepted)");
-      // the edge after the longest one and the one before it meet at the corner opposite it
-      if(len > longest)
+      const std::size_t user_face = order[fi];
+      FT p[3][3];
+      for(int k = 0; k < 3; ++k)
+        for(int c = 0; c < 3; ++c)
+          p[k][c] = xyz[3 * out.m_corner_vertex[3 * fi + k] + c];
+      const auto degenerate = [user_face] {
+        return std::invalid_argument("face " + std::to_string(user_face) + " is degenerate (zero length edge or zero area)");
+      };
+      const auto too_large = [user_face] {
+        return std::invalid_argument("face " + std::to_string(user_face) +
+                                     " is too large for the number type (its squared edge lengths or area overflow): "
+                                     "scale the mesh down (distances scale with it)");
+      };
+      FT twice_area(0), longest(0);
+      for(int k = 0; k < 3; ++k)
       {
-        longest = len;
-        const FT* o = p[(k + 2) % 3];
-        const FT u[3] = {a[0] - o[0], a[1] - o[1], a[2] - o[2]};
-        const FT v[3] = {b[0] - o[0], b[1] - o[1], b[2] - o[2]};
-        const FT n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-        twice_area = root(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        const FT* a = p[k];
+        const FT* b = p[(k + 1) % 3];
+        const FT* c = p[(k + 2) % 3];
+        const FT ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const FT ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const FT len = root(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
+        const Index hi = Index(3 * fi + k);
+        out.m_length[hi] = len;
+        const FT corner_dot = ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2];
+        out.m_apex_x[hi] = corner_dot / len;
+        if constexpr(Number_type_math<FT>::is_exact)
+          out.m_corner_dot[hi] = corner_dot;
+        if(!CGAL::is_finite(len))
+          throw too_large();
+        if(!(len > FT(0)) || !CGAL::is_finite(out.m_apex_x[hi]))
+          throw degenerate();
+        if(CGAL::to_double(len) < shortest_accepted)
+          throw std::invalid_argument("face " + std::to_string(user_face) + " has an edge of length " +
+                                      to_short_string(CGAL::to_double(len)) + " in a mesh " + to_short_string(extent) +
+                                      " across: distances on this mesh cannot tell so short an edge from rounding (at least " +
+                                      to_short_string(CGAL::to_double(Tuning<FT>::min_relative_edge())) +
+                                      " times the mesh's size is accepted)");
+        // the edge after the longest one and the one before it meet at the corner opposite it
+        if(len > longest)
+        {
+          longest = len;
+          const FT* o = p[(k + 2) % 3];
+          const FT u[3] = {a[0] - o[0], a[1] - o[1], a[2] - o[2]};
+          const FT v[3] = {b[0] - o[0], b[1] - o[1], b[2] - o[2]};
+          const FT n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+          twice_area = root(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        }
       }
+      out.m_twice_area[fi] = twice_area;
+      if(!CGAL::is_finite(twice_area))
+        throw too_large();
+      if(!(twice_area > FT(0)) || !CGAL::is_finite(twice_area / longest))
+        throw degenerate();
+      // longest / height on it = longest^2 / (2 area)
+      if(longest > Tuning<FT>::max_sliver_ratio() * (twice_area / longest))
+        throw std::invalid_argument("face " + std::to_string(user_face) + " is a sliver: an edge " +
+                                    to_short_string(CGAL::to_double(longest * longest / twice_area)) +
+                                    " times longer than the height on it (at most " +
+                                    to_short_string(CGAL::to_double(Tuning<FT>::max_sliver_ratio())) + " is accepted)");
     }
-    out.m_twice_area[fi] = twice_area;
-    if(!CGAL::is_finite(twice_area))
-      throw too_large();
-    if(!(twice_area > FT(0)) || !CGAL::is_finite(twice_area / longest))
-      throw degenerate();
-    // longest / height on it = longest^2 / (2 area)
-    if(longest > Tuning<FT>::max_sliver_ratio() * (twice_area / longest))
-      throw std::invalid_argument("face " + std::to_string(user_face) + " is a sliver: an edge " +
-                                  to_short_string(CGAL::to_double(longest * longest / twice_area)) +
-                                  " times longer than the height on it (at most " +
-                                  to_short_string(CGAL::to_double(Tuning<FT>::max_sliver_ratio())) + " is accepted)");
-  }
+  });
   xyz = std::vector<FT>(); // its memory is the peak's
 
-  // border vertices
+  // border vertices, on one thread: the halfedges in order are a stream, a vertex's corners are not
   out.m_singular.assign(nv, 0);
   for(Index h = 0; h < 3 * nf; ++h)
-    if(out.m_opposite[h] == Unfolded_mesh<FT>::no_halfedge)
+    if(out.m_opposite[h] == no_halfedge)
     {
       out.m_singular[out.source(h)] = 1;
       out.m_singular[out.target(h)] = 1;
@@ -305,44 +313,56 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   // Put the corners of each vertex in turning order (corner h, then the corner across the edge
   // prev(h)), starting after the border if there is one, and sum the angles of each closed fan.
   // A vertex whose corners are not one fan (several umbrellas meet there) is singular.
-  out.m_corner_rank.assign(3 * nf, 0);
+  out.m_corner_rank.resize(3 * nf); // every corner's vertex writes it
   std::vector<Angle_sum<FT>> angle_sum(nv);
-  // Vertices in the faces' spatial order: their corners' faces are then near each other in memory.
-  std::vector<Index> ordered;
-  std::vector<char> done(nv, 0);
-  for(Index v : out.m_corner_vertex)
-  {
-    if(done[v])
-      continue;
-    done[v] = 1;
-    Index* first = out.m_vertex_corners.data() + out.m_vertex_corners_begin[v];
-    Index* last = out.m_vertex_corners.data() + out.m_vertex_corners_begin[v + 1];
-    Index start = *first;
-    for(Index* c = first; c != last; ++c)
-      if(out.m_opposite[*c] == Unfolded_mesh<FT>::no_halfedge)
-        start = *c;
-    ordered.clear();
-    Index h = start;
-    do
+  // Each vertex at its first corner (the smallest, marked before the loop puts any in turning
+  // order), so in the faces' spatial order: its corners' faces are then near each other in memory.
+  std::vector<char> is_first(3 * nf, 0);
+  for_each_block<ConcurrencyTag>(nv, [&](std::size_t v0, std::size_t v1) {
+    for(Index v = Index(v0); v < v1; ++v)
+      if(out.corners_begin(v) != out.corners_end(v))
+        is_first[*out.corners_begin(v)] = 1;
+  });
+  std::atomic<std::size_t> non_manifold(0);
+  for_each_block<ConcurrencyTag>(3 * nf, [&](std::size_t h0, std::size_t h1) {
+    std::vector<Index> ordered;
+    std::size_t pinched = 0;
+    for(Index corner = Index(h0); corner < h1; ++corner)
     {
-      ordered.push_back(h);
-      angle_sum[v].add(out.last_edge_direction(h));
-      const Index across = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
-      if(across == Unfolded_mesh<FT>::no_halfedge)
-        break;
-      h = across;
+      if(!is_first[corner])
+        continue;
+      const Index v = out.source(corner);
+      Index* first = out.m_vertex_corners.data() + out.m_vertex_corners_begin[v];
+      Index* last = out.m_vertex_corners.data() + out.m_vertex_corners_begin[v + 1];
+      Index start = *first;
+      for(Index* c = first; c != last; ++c)
+        if(out.m_opposite[*c] == no_halfedge)
+          start = *c;
+      ordered.clear();
+      Index h = start;
+      do
+      {
+        ordered.push_back(h);
+        angle_sum[v].add(out.last_edge_direction(h));
+        const Index across = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
+        if(across == no_halfedge)
+          break;
+        h = across;
+      }
+      while(h != start && ordered.size() <= std::size_t(last - first));
+      if(ordered.size() == std::size_t(last - first))
+        std::copy(ordered.begin(), ordered.end(), first);
+      else
+      {
+        out.m_singular[v] = 1;
+        ++pinched;
+      }
+      for(Index* c = first; c != last; ++c)
+        out.m_corner_rank[*c] = Index(c - first);
     }
-    while(h != start && ordered.size() <= std::size_t(last - first));
-    if(ordered.size() == std::size_t(last - first))
-      std::copy(ordered.begin(), ordered.end(), first);
-    else
-    {
-      out.m_singular[v] = 1;
-      ++out.m_non_manifold_vertices;
-    }
-    for(Index* c = first; c != last; ++c)
-      out.m_corner_rank[*c] = Index(c - first);
-  }
+    non_manifold += pinched; // a count: the same whatever the order of the blocks
+  });
+  out.m_non_manifold_vertices = non_manifold;
 
   // Windows wrap around the tip of a closed fan (a cone) about pi / angle times before the ICH
   // rule prunes them, so a needle-sharp cone would make the propagation run for hours. A regular
@@ -358,31 +378,33 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
                                     " radians (at least " + to_short_string(CGAL::to_double(min_angle)) +
                                     " is accepted)");
     };
-    std::vector<char> walked(3 * nf, 0);
-    for(std::size_t v = 0; v < nv; ++v)
-    {
-      if(!out.m_singular[v])
+    std::vector<char> walked(3 * nf, 0); // a fan's corners are all at its vertex: one block's
+    for_each_block<ConcurrencyTag>(nv, [&](std::size_t v0, std::size_t v1) {
+      for(std::size_t v = v0; v < v1; ++v)
       {
-        if(out.corners_begin(Index(v)) != out.corners_end(Index(v)))
-          check_cone(v, angle_sum[v]);
-        continue;
-      }
-      for(const Index* first = out.corners_begin(Index(v)); first != out.corners_end(Index(v)); ++first)
-      {
-        if(walked[*first])
-          continue;
-        Angle_sum<FT> angle;
-        Index h = *first;
-        while(h != no_halfedge && !walked[h])
+        if(!out.m_singular[v])
         {
-          walked[h] = 1;
-          angle.add(out.last_edge_direction(h));
-          h = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
+          if(out.corners_begin(Index(v)) != out.corners_end(Index(v)))
+            check_cone(v, angle_sum[v]);
+          continue;
         }
-        if(h == *first)
-          check_cone(v, angle);
+        for(const Index* first = out.corners_begin(Index(v)); first != out.corners_end(Index(v)); ++first)
+        {
+          if(walked[*first])
+            continue;
+          Angle_sum<FT> angle;
+          Index h = *first;
+          while(h != no_halfedge && !walked[h])
+          {
+            walked[h] = 1;
+            angle.add(out.last_edge_direction(h));
+            h = out.m_opposite[Unfolded_mesh<FT>::prev(h)];
+          }
+          if(h == *first)
+            check_cone(v, angle);
+        }
       }
-    }
+    });
   }
 
   // A flat vertex computed as slightly above 2*pi is harmless as a pseudo-source (its windows
@@ -393,8 +415,10 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, std::vector<std
   const bool exactly = !(below > 0.);
   const Vec2<FT> two_pi_less = exactly ? Vec2<FT>{number<FT>(1), number<FT>(0)} : Vec2<FT>{number<FT>(std::cos(below)), number<FT>(-std::sin(below))};
   out.m_exact_pseudo_source.assign(nv, 0);
-  for(std::size_t v = 0; v < nv; ++v)
-    out.m_exact_pseudo_source[v] = out.m_singular[v] || angle_sum[v].compare(exactly ? 2 : 1, two_pi_less) > 0;
+  for_each_block<ConcurrencyTag>(nv, [&](std::size_t v0, std::size_t v1) {
+    for(std::size_t v = v0; v < v1; ++v)
+      out.m_exact_pseudo_source[v] = out.m_singular[v] || angle_sum[v].compare(exactly ? 2 : 1, two_pi_less) > 0;
+  });
   return order;
 }
 

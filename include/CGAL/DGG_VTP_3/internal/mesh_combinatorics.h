@@ -14,6 +14,9 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Default_init_allocator.h>
+#include <CGAL/DGG_VTP_3/internal/for_each_block.h>
+
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -30,37 +33,79 @@ namespace DGG_VTP_3 {
 namespace internal {
 
 // The combinatorics Unfolded_mesh is prepared from, before any geometry: the faces in space
-// order, the corners grouped by vertex, the opposite of each halfedge.
+// order, the corners grouped by vertex, the opposite of each halfedge. `ConcurrencyTag` says how
+// the loops run (for_each_block()); the results do not depend on it.
+
+// One stable pass of a counting sort of the items 0 to n-1 by `digit(i)`, in [0, digits), shared
+// among threads in fixed blocks of 2^16 items: each block counts its digits, then its items of
+// digit d go after those of the smaller digits and of the blocks before it, where one pass over
+// all the items would put them; `place(i, position)` moves item i. Returns where the items of
+// each digit begin (digits + 1 offsets). With `skip_one_digit`, a pass whose items all have one
+// digit (which would move nothing) places nothing and returns no offsets.
+template <class ConcurrencyTag, class Digit, class Place>
+std::vector<std::size_t> counting_sort_pass(std::size_t n, std::size_t digits, const Digit& digit, const Place& place,
+                                            bool skip_one_digit)
+{
+  constexpr std::size_t block = std::size_t(1) << 16;
+  const std::size_t blocks = (n + block - 1) / block;
+  std::vector<std::size_t> first(blocks * digits);
+  for_each_block<ConcurrencyTag>(blocks, [&](std::size_t b0, std::size_t b1) {
+    for(std::size_t b = b0; b < b1; ++b)
+    {
+      std::size_t* count = first.data() + b * digits;
+      std::fill(count, count + digits, std::size_t(0));
+      for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i)
+        ++count[digit(i)];
+    }
+  }, 1);
+  std::vector<std::size_t> digit_begin(digits + 1, 0);
+  for(std::size_t d = 0, at = 0; d < digits; ++d)
+  {
+    digit_begin[d] = at;
+    for(std::size_t b = 0; b < blocks; ++b)
+      at += std::exchange(first[b * digits + d], at);
+    digit_begin[d + 1] = at;
+    if(skip_one_digit && at - digit_begin[d] == n)
+      return std::vector<std::size_t>();
+  }
+  for_each_block<ConcurrencyTag>(blocks, [&](std::size_t b0, std::size_t b1) {
+    for(std::size_t b = b0; b < b1; ++b)
+      for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i)
+        place(i, first[b * digits + digit(i)]++);
+  }, 1);
+  return digit_begin;
+}
+
+// a face and its place on the space-filling curve (no initializers: arrays of them are written whole)
+struct Face_key
+{
+  std::uint64_t key;
+  std::uint32_t face;
+};
 
 // Sorts (key, face) pairs by key, faces of equal keys in increasing order, as std::sort would:
 // a least significant digit first radix sort of the 63-bit keys, a few times faster.
-inline void sort_by_key(std::vector<std::pair<std::uint64_t, std::uint32_t>>& keys)
+template <class ConcurrencyTag>
+void sort_by_key(Uninitialized_vector<Face_key>& keys)
 {
   constexpr int digit_bits = 11;
-  constexpr std::uint64_t digit_mask = (std::uint64_t(1) << digit_bits) - 1;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> sorted(keys.size());
+  constexpr std::size_t digits = std::size_t(1) << digit_bits;
+  Uninitialized_vector<Face_key> sorted(keys.size());
   for(int shift = 0; shift < 64; shift += digit_bits)
-  {
-    std::vector<std::size_t> first(digit_mask + 2, 0);
-    for(const auto& k : keys)
-      ++first[((k.first >> shift) & digit_mask) + 1];
-    if(std::count(first.begin(), first.end(), keys.size()) == 1)
-      continue; // one digit for all: nothing moves
-    for(std::size_t d = 0; d <= digit_mask; ++d)
-      first[d + 1] += first[d];
-    for(const auto& k : keys)
-      sorted[first[(k.first >> shift) & digit_mask]++] = k;
-    keys.swap(sorted);
-  }
+    if(!counting_sort_pass<ConcurrencyTag>(
+          keys.size(), digits, [&](std::size_t i) { return std::size_t((keys[i].key >> shift) & (digits - 1)); },
+          [&](std::size_t i, std::size_t position) { sorted[position] = keys[i]; }, true)
+          .empty())
+      keys.swap(sorted);
 }
 
 // Faces along a Z-order (Morton) curve of their centroids: faces near each other in the order are
 // near each other on the surface, so that the propagation's working set is a few compact blocks of
 // memory whatever the order of the user's faces, and a range of faces is a compact patch.
 // `extent` receives the largest side of the bounding box of the vertices the faces use.
-template <class FT>
+template <class ConcurrencyTag, class FT>
 std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
-                                                const std::vector<std::uint32_t>& corner_vertex, double& extent)
+                                                const Uninitialized_vector<std::uint32_t>& corner_vertex, double& extent)
 {
   const std::size_t nf = corner_vertex.size() / 3;
   const std::size_t nv = xyz.size() / 3;
@@ -92,70 +137,106 @@ std::vector<std::uint32_t> faces_in_space_order(const std::vector<FT>& xyz,
     return x;
   };
   const double scale = extent > 0. && std::isfinite(extent) ? double((1 << 21) - 1) / extent : 0.;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(nf);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    double centroid[3] = {0., 0., 0.};
-    for(int k = 0; k < 3; ++k)
-      for(int c = 0; c < 3; ++c)
-        centroid[c] += CGAL::to_double(xyz[3 * corner_vertex[3 * f + k] + c]) / 3.;
-    std::uint64_t key = 0;
-    for(int c = 0; c < 3; ++c)
+  Uninitialized_vector<Face_key> keys(nf);
+  for_each_block<ConcurrencyTag>(nf, [&](std::size_t f0, std::size_t f1) {
+    for(std::size_t f = f0; f < f1; ++f)
     {
-      // written so that a NaN (a box too large for a double: inf times a zero scale) gives cell 0
-      const double t = (centroid[c] - low[c]) * scale;
-      const double cell = t > 0. ? (std::min)(t, double((1 << 21) - 1)) : 0.;
-      key |= spread(std::uint64_t(cell)) << c;
+      double centroid[3] = {0., 0., 0.};
+      for(int k = 0; k < 3; ++k)
+        for(int c = 0; c < 3; ++c)
+          centroid[c] += CGAL::to_double(xyz[3 * corner_vertex[3 * f + k] + c]) / 3.;
+      std::uint64_t key = 0;
+      for(int c = 0; c < 3; ++c)
+      {
+        // written so that a NaN (a box too large for a double: inf times a zero scale) gives cell 0
+        const double t = (centroid[c] - low[c]) * scale;
+        const double cell = t > 0. ? (std::min)(t, double((1 << 21) - 1)) : 0.;
+        key |= spread(std::uint64_t(cell)) << c;
+      }
+      keys[f] = Face_key{key, std::uint32_t(f)};
     }
-    keys[f] = {key, std::uint32_t(f)};
-  }
-  sort_by_key(keys);
+  });
+  sort_by_key<ConcurrencyTag>(keys);
   std::vector<std::uint32_t> order(nf);
-  for(std::size_t f = 0; f < nf; ++f)
-    order[f] = keys[f].second;
+  for_each_block<ConcurrencyTag>(nf, [&](std::size_t f0, std::size_t f1) {
+    for(std::size_t f = f0; f < f1; ++f)
+      order[f] = keys[f].face;
+  });
   return order;
 }
 
 // renumbers the faces: new face i is the user's face order[i] (the corners' vertices and the
 // opposite halfedges if known, the only per-face data so far)
-inline void reorder_faces(const std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& corner_vertex,
-                          std::vector<std::uint32_t>& opposite)
+template <class ConcurrencyTag>
+void reorder_faces(const std::vector<std::uint32_t>& order, Uninitialized_vector<std::uint32_t>& corner_vertex,
+                   Uninitialized_vector<std::uint32_t>& opposite)
 {
   constexpr std::uint32_t none = std::uint32_t(-1);
   const std::size_t nf = order.size();
-  std::vector<std::uint32_t> new_face(nf);
-  for(std::size_t f = 0; f < nf; ++f)
-    new_face[order[f]] = std::uint32_t(f);
-  std::vector<std::uint32_t> reordered_vertex(3 * nf), reordered_opposite(opposite.empty() ? 0 : 3 * nf);
-  for(std::size_t f = 0; f < nf; ++f)
-    for(int k = 0; k < 3; ++k)
-    {
-      reordered_vertex[3 * f + k] = corner_vertex[3 * order[f] + k];
-      if(!opposite.empty())
+  Uninitialized_vector<std::uint32_t> new_face(nf);
+  for_each_block<ConcurrencyTag>(nf, [&](std::size_t f0, std::size_t f1) {
+    for(std::size_t f = f0; f < f1; ++f)
+      new_face[order[f]] = std::uint32_t(f);
+  });
+  Uninitialized_vector<std::uint32_t> reordered_vertex(3 * nf), reordered_opposite(opposite.empty() ? 0 : 3 * nf);
+  for_each_block<ConcurrencyTag>(nf, [&](std::size_t f0, std::size_t f1) {
+    for(std::size_t f = f0; f < f1; ++f)
+      for(int k = 0; k < 3; ++k)
       {
-        const std::uint32_t h = opposite[3 * order[f] + k];
-        reordered_opposite[3 * f + k] = h == none ? h : 3 * new_face[h / 3] + h % 3;
+        reordered_vertex[3 * f + k] = corner_vertex[3 * order[f] + k];
+        if(!opposite.empty())
+        {
+          const std::uint32_t h = opposite[3 * order[f] + k];
+          reordered_opposite[3 * f + k] = h == none ? h : 3 * new_face[h / 3] + h % 3;
+        }
       }
-    }
+  });
   corner_vertex.swap(reordered_vertex);
   if(!opposite.empty())
     opposite.swap(reordered_opposite);
 }
 
 // The corners (halfedges 3f+k) grouped by their vertex, in CSR form: those of vertex v are
-// corners[begin[v]] to corners[begin[v+1]-1], in increasing order.
-inline void group_corners_by_vertex(const std::vector<std::uint32_t>& corner_vertex, std::size_t nv,
-                                    std::vector<std::uint32_t>& begin, std::vector<std::uint32_t>& corners)
+// corners[begin[v]] to corners[begin[v+1]-1], in increasing order. A counting sort in two stable
+// levels, so that no counter is shared between threads (atomic counters cost more than a second
+// thread saves): the corners by ranges of 2^shift vertices (at most 2048 ranges), then each
+// range's corners by vertex.
+template <class ConcurrencyTag>
+void group_corners_by_vertex(const Uninitialized_vector<std::uint32_t>& corner_vertex, std::size_t nv,
+                             std::vector<std::uint32_t>& begin, Uninitialized_vector<std::uint32_t>& corners)
 {
-  begin.assign(nv + 1, 0);
-  for(std::uint32_t v : corner_vertex)
-    ++begin[v + 1];
-  for(std::size_t v = 0; v < nv; ++v)
-    begin[v + 1] += begin[v];
-  corners.resize(corner_vertex.size());
-  std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
-  for(std::uint32_t h = 0; h < corner_vertex.size(); ++h)
-    corners[fill[corner_vertex[h]]++] = h;
+  struct Corner { std::uint32_t vertex, corner; };
+  const std::size_t nh = corner_vertex.size();
+  int shift = 0;
+  while(((nv + (std::size_t(1) << shift) - 1) >> shift) > 2048)
+    ++shift;
+  const std::size_t ranges = (nv + (std::size_t(1) << shift) - 1) >> shift;
+  Uninitialized_vector<Corner> by_range(nh);
+  const std::vector<std::size_t> range_begin = counting_sort_pass<ConcurrencyTag>(
+    nh, ranges, [&](std::size_t h) { return std::size_t(corner_vertex[h] >> shift); },
+    [&](std::size_t h, std::size_t position) { by_range[position] = Corner{corner_vertex[h], std::uint32_t(h)}; },
+    false);
+  begin.resize(nv + 1);
+  begin[nv] = std::uint32_t(nh);
+  corners.resize(nh);
+  for_each_block<ConcurrencyTag>(ranges, [&](std::size_t r0, std::size_t r1) {
+    std::vector<std::uint32_t> fill;
+    for(std::size_t r = r0; r < r1; ++r)
+    {
+      const std::size_t v0 = r << shift, v1 = (std::min)(nv, (r + 1) << shift);
+      fill.assign(v1 - v0, 0);
+      for(std::size_t i = range_begin[r]; i < range_begin[r + 1]; ++i)
+        ++fill[by_range[i].vertex - v0];
+      std::uint32_t at = std::uint32_t(range_begin[r]);
+      for(std::size_t v = v0; v < v1; ++v)
+      {
+        begin[v] = at;
+        at += std::exchange(fill[v - v0], at);
+      }
+      for(std::size_t i = range_begin[r]; i < range_begin[r + 1]; ++i)
+        corners[fill[by_range[i].vertex - v0]++] = by_range[i].corner;
+    }
+  }, 1);
 }
 
 // The opposite of each halfedge a->b: the one halfedge b->a, or `no_halfedge` on the border.
@@ -163,39 +244,42 @@ inline void group_corners_by_vertex(const std::vector<std::uint32_t>& corner_ver
 // corner there), so each vertex's corners (CSR `begin`, `corners`) are matched among themselves.
 // Throws std::invalid_argument where two halfedges go from a to b: the faces do not form a
 // surface as they are. Faces are named by the user's numbering, `order`.
-inline std::vector<std::uint32_t> matched_halfedges(const std::vector<std::uint32_t>& corner_vertex,
-                                                   const std::vector<std::uint32_t>& begin,
-                                                   const std::vector<std::uint32_t>& corners,
-                                                   const std::vector<std::uint32_t>& order)
+template <class ConcurrencyTag>
+Uninitialized_vector<std::uint32_t> matched_halfedges(const Uninitialized_vector<std::uint32_t>& corner_vertex,
+                                                         const std::vector<std::uint32_t>& begin,
+                                                         const Uninitialized_vector<std::uint32_t>& corners,
+                                                         const std::vector<std::uint32_t>& order)
 {
   const auto next = [](std::uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; };
   const auto prev = [](std::uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; };
-  std::vector<std::uint32_t> opposite(corner_vertex.size(), std::uint32_t(-1));
-  std::vector<std::uint32_t> ahead, behind; // per corner at a: the vertex after it, the vertex before it
-  for(std::size_t a = 0; a + 1 < begin.size(); ++a)
-  {
-    const std::uint32_t* first = corners.data() + begin[a];
-    const std::size_t n = begin[a + 1] - begin[a];
-    ahead.resize(n);
-    behind.resize(n);
-    for(std::size_t i = 0; i < n; ++i)
+  Uninitialized_vector<std::uint32_t> opposite(corner_vertex.size(), std::uint32_t(-1));
+  for_each_block<ConcurrencyTag>(begin.size() - 1, [&](std::size_t a0, std::size_t a1) {
+    std::vector<std::uint32_t> ahead, behind; // per corner at a: the vertex after it, the vertex before it
+    for(std::size_t a = a0; a < a1; ++a)
     {
-      ahead[i] = corner_vertex[next(first[i])];
-      behind[i] = corner_vertex[prev(first[i])];
-    }
-    for(std::size_t i = 0; i < n; ++i)
-      for(std::size_t j = 0; j < n; ++j)
+      const std::uint32_t* first = corners.data() + begin[a];
+      const std::size_t n = begin[a + 1] - begin[a];
+      ahead.resize(n);
+      behind.resize(n);
+      for(std::size_t i = 0; i < n; ++i)
       {
-        if(behind[j] == ahead[i])
-          opposite[first[i]] = prev(first[j]);
-        if(j > i && ahead[j] == ahead[i])
-          throw std::invalid_argument("triangles " + std::to_string(order[first[i] / 3]) + " and " +
-                                      std::to_string(order[first[j] / 3]) + " both go from vertex " +
-                                      std::to_string(a) + " to vertex " + std::to_string(ahead[i]) +
-                                      ": their orientations disagree, or more than two triangles share the edge "
-                                      "(CGAL::Polygon_mesh_processing::orient_polygon_soup() repairs both)");
+        ahead[i] = corner_vertex[next(first[i])];
+        behind[i] = corner_vertex[prev(first[i])];
       }
-  }
+      for(std::size_t i = 0; i < n; ++i)
+        for(std::size_t j = 0; j < n; ++j)
+        {
+          if(behind[j] == ahead[i])
+            opposite[first[i]] = prev(first[j]);
+          if(j > i && ahead[j] == ahead[i])
+            throw std::invalid_argument("triangles " + std::to_string(order[first[i] / 3]) + " and " +
+                                        std::to_string(order[first[j] / 3]) + " both go from vertex " +
+                                        std::to_string(a) + " to vertex " + std::to_string(ahead[i]) +
+                                        ": their orientations disagree, or more than two triangles share the edge "
+                                        "(CGAL::Polygon_mesh_processing::orient_polygon_soup() repairs both)");
+        }
+    }
+  });
   return opposite;
 }
 

@@ -14,7 +14,9 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Default_init_allocator.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/for_each_block.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -52,8 +54,9 @@ void store_point(const GeomTraits& gt, const Point& p, std::size_t i, std::vecto
 
 // Fills the mesh from a user's triangle mesh (a free function: the graph's next(), source()...
 // would be hidden inside the class by the members of the same names). Returns the order of the
-// faces: new face i is the user's face order[i] (by the face index map).
-template <class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
+// faces: new face i is the user's face order[i] (by the face index map). The graph is walked on
+// this thread (its ranges need not be random access); `ConcurrencyTag` is unfold_triangles()'s.
+template <class ConcurrencyTag, class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
           class GeomTraits>
 std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
                           FaceIndexMap fim, const GeomTraits& gt, Unfolded_mesh<FT>& out)
@@ -80,7 +83,7 @@ std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPo
     store_point(gt, get(vpm, v), i, xyz);
   }
 
-  std::vector<Index> corner_vertex(3 * nf), opposite_halfedge(3 * nf);
+  Uninitialized_vector<Index> corner_vertex(3 * nf), opposite_halfedge(3 * nf);
   std::vector<char> face_seen(nf, 0);
   for(auto f : faces(tm))
   {
@@ -106,7 +109,7 @@ std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPo
       }
     }
   }
-  return unfold_triangles(std::move(xyz), std::move(corner_vertex), std::move(opposite_halfedge), out);
+  return unfold_triangles<ConcurrencyTag>(std::move(xyz), std::move(corner_vertex), std::move(opposite_halfedge), out);
 }
 
 
@@ -123,8 +126,9 @@ bool is_negative_index(Integer v)
 // map `pm`) and `triangles` (a range of ranges of 3 indices into `points`). The faces must form
 // a surface as they are (each edge shared by at most two triangles, which go along it in opposite
 // directions); vertices where several fans of triangles meet are kept. Returns the order of the
-// faces: new face i is triangle order[i].
-template <class FT, class PointRange, class TriangleRange, class PointMap, class GeomTraits>
+// faces: new face i is triangle order[i]. The points (a random access range) are read as
+// `ConcurrencyTag` says, and so are the triangles if they are a random access range too.
+template <class ConcurrencyTag, class FT, class PointRange, class TriangleRange, class PointMap, class GeomTraits>
 std::vector<std::uint32_t> unfold_triangle_soup(const PointRange& points, const TriangleRange& triangles, PointMap pm,
                                                 const GeomTraits& gt, Unfolded_mesh<FT>& out)
 {
@@ -134,14 +138,13 @@ std::vector<std::uint32_t> unfold_triangle_soup(const PointRange& points, const 
   check_index_range<FT>(nv, nf);
 
   std::vector<FT> xyz(3 * nv);
-  std::size_t i = 0;
-  for(const auto& p : points)
-    store_point(gt, get(pm, p), i++, xyz);
+  for_each_block<ConcurrencyTag>(nv, [&](std::size_t i0, std::size_t i1) {
+    for(std::size_t i = i0; i < i1; ++i)
+      store_point(gt, get(pm, *(std::begin(points) + i)), i, xyz);
+  });
 
-  std::vector<Index> corner_vertex(3 * nf);
-  std::size_t f = 0;
-  for(const auto& triangle : triangles)
-  {
+  Uninitialized_vector<Index> corner_vertex(3 * nf);
+  const auto read_triangle = [&](std::size_t f, const auto& triangle) {
     std::size_t k = 0;
     for(const auto& v : triangle)
     {
@@ -154,10 +157,22 @@ std::vector<std::uint32_t> unfold_triangle_soup(const PointRange& points, const 
     }
     if(k != 3 || std::size_t(std::distance(std::begin(triangle), std::end(triangle))) != 3)
       throw std::invalid_argument("face " + std::to_string(f) + " is not a triangle");
-    ++f;
+  };
+  using Triangle_iterator = decltype(std::begin(triangles));
+  if constexpr(std::is_convertible<typename std::iterator_traits<Triangle_iterator>::iterator_category,
+                                   std::random_access_iterator_tag>::value)
+    for_each_block<ConcurrencyTag>(nf, [&](std::size_t f0, std::size_t f1) {
+      for(std::size_t f = f0; f < f1; ++f)
+        read_triangle(f, *(std::begin(triangles) + f));
+    });
+  else
+  {
+    std::size_t f = 0;
+    for(const auto& triangle : triangles)
+      read_triangle(f++, triangle);
   }
 
-  return unfold_triangles(std::move(xyz), std::move(corner_vertex), std::vector<Index>(), out);
+  return unfold_triangles<ConcurrencyTag>(std::move(xyz), std::move(corner_vertex), Uninitialized_vector<Index>(), out);
 }
 
 } // namespace internal
