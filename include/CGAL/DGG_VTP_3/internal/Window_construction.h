@@ -33,24 +33,24 @@ namespace internal {
 
 // The full-edge window that a pseudo-source at `p` (in the frame of halfedge `e`, inside its face),
 // at distance `sigma`, sends across the edge of `e`, in the frame of the neighbouring halfedge
-// (the caller checks that there is one). In DGG-VTP (`keys` not exact) its CH-relay vertices
-// are the ends of the edge (paper, Algorithm 1, line 3), at distances `relay_left` (from the
-// target of `e`, the start of the neighbouring halfedge) and `relay_right`, and its distance
-// bound follows from them; the exact mode has neither.
+// (the caller checks that there is one). Where windows stop (`keys.stops()`) its CH-relay
+// vertices are the ends of the edge (paper, Algorithm 1, line 3), at distances `relay_left` (from
+// the target of `e`, the start of the neighbouring halfedge) and `relay_right`, and its distance
+// bound follows from them; elsewhere it has neither, as take_relay() gives none.
 template <class FT>
 inline Window<FT> window_from_point(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index e,
                                     const Vec2<FT>& p, FT sigma, FT relay_left, FT relay_right,
                                     const Key_ratio<FT>& keys, std::uint32_t origin)
 {
   const FT len = mesh.length(e);
-  const bool dgg = !keys.is_exact();
+  const bool stops = keys.stops();
   Window<FT> w;
   w.b0 = number<FT>(0);
   w.b1 = len;
   w.source = Vec2<FT>{len - p.x, -p.y}; // the same triangle seen from the other side
   w.sigma = keys.key(sigma);
-  w.relay_left = dgg ? relay_left : number<FT>(0);
-  w.relay_right = dgg ? relay_right : number<FT>(0);
+  w.relay_left = stops ? relay_left : number<FT>(0);
+  w.relay_right = stops ? relay_right : number<FT>(0);
   w.relay_left_vertex = mesh.target(e);
   w.relay_right_vertex = mesh.source(e);
   w.set_bound(distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, keys));
