@@ -10,7 +10,7 @@
 // directions, with the hinged triangle's orientation either way; DGG-VTP within [exact, exact (1 +
 // epsilon)]; a sphere and a real mesh cut into sheets, one of them turned, against the uncut
 // ones; point sources on a split edge; paths as long as the distance, through the copies;
-// copy_of's checks.
+// copy_of's checks, and sheets of one triangle refused.
 
 #include "test_utilities.h"
 
@@ -26,6 +26,7 @@
 #include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace {
@@ -366,6 +367,37 @@ BOOST_AUTO_TEST_CASE(copy_of_is_checked)
   std::vector<std::size_t> elsewhere = m.copy_of;
   elsewhere[a_copy] = 1;
   BOOST_CHECK_THROW(Solver(m.points, m.triangles, DP::copy_of(elsewhere)), std::invalid_argument);
+}
+
+// Three sheets of one needle triangle (a fuzz input, 0.24 degrees there): the windows between
+// them would multiply without end, so the solver refuses them, naming the points; one sheet, or
+// two on the same points without copies (a closed pillow), give the distances in the plane.
+BOOST_AUTO_TEST_CASE(sheets_of_one_triangle)
+{
+  const double needle = std::tan(0.24 * std::acos(-1.) / 180.);
+  std::vector<Point> points;
+  for(int sheet = 0; sheet < 3; ++sheet)
+    points.insert(points.end(), {Point(0, 0, 0), Point(1, 0, 0), Point(0, needle, 0)});
+  const std::vector<Triangle> three{{0, 1, 2}, {3, 4, 5}, {6, 7, 8}};
+  const std::vector<std::size_t> copy_of{0, 1, 2, 0, 1, 2, 0, 1, 2};
+  try
+  {
+    Solver(points, three, DP::copy_of(copy_of));
+    BOOST_ERROR("three sheets of one triangle were taken");
+  }
+  catch(const std::invalid_argument& e)
+  {
+    BOOST_CHECK_EQUAL(std::string(e.what()), "two triangles are on the same points 0, 1 and 2 (copy_of making them "
+                                             "copies): leave all but one of them out");
+  }
+  const std::vector<double> expected{0., 1., needle};
+  for(const std::vector<Triangle>& faces : {std::vector<Triangle>{{0, 1, 2}}, std::vector<Triangle>{{0, 1, 2}, {0, 2, 1}}})
+    for(double accuracy : {0., 1e-3})
+    {
+      const std::vector<double> d = distances(Solver(points, faces), points.size(), 0, accuracy);
+      for(std::size_t v = 0; v < 3; ++v)
+        BOOST_CHECK_CLOSE_FRACTION(d[v] + 1., expected[v] + 1., 1e-15 + accuracy);
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -589,6 +589,17 @@ case $case in
       expect_lines_within 1e-2 "$work/d.txt" 1.4142135623730951 1.4142135623730951 1.4142135623730951 \
         1.4142135623730951 2.4494897427831781 0 2.2247448713915890
     done ;;
+  repeated_faces_are_dropped)  # a needle triangle three times (the fuzz input that hung, 0.24 degrees at 1)
+    # Split into sheets they would be sheets of one triangle, which the solver refuses; one is kept,
+    # with a warning, and the distances are the triangle's own, straight lines in the plane.
+    for third in "0 1 2" "0 2 1"; do
+      printf 'OFF\n3 3 0\n0 0 0\n1 0 0\n0 0.0041887902047863905 0\n3 0 1 2\n3 0 1 2\n3 %s\n' "$third" | input n.off
+      for epsilon in 0 1e-3; do
+        run "$work/n.off" --source 1 --epsilon $epsilon --output "$work/d.txt"
+        expect_warning "dropped [12] faces on the same three vertices"
+        expect_lines_within "$(echo "$epsilon + 1e-12" | bc -l)" "$work/d.txt" 1 0 1.0000087729432077
+      done
+    done ;;
   non_manifold_vertex_paths_pass)  # two fans meeting at 0: paths from one to the other go through it
     run "$data/non_manifold_vertex.off" --quiet --source 1 --output "$work/d.txt"; expect_rc 0
     expect_lines "$work/d.txt" 1 0 1.4142135623730951 2 2 ;;

@@ -109,7 +109,8 @@ public:
    *         for a triangle that does not have 3 indices or refers to a point that does not exist,
    *         for two triangles that go along an edge in the same direction (inconsistent
    *         orientations, or an edge of more than two triangles), and for `copy_of` not of one
-   *         index per point, or giving a copy at another place than its point.
+   *         index per point, giving a copy at another place than its point, or making two
+   *         triangles sheets of one (on the same three points, through copies).
    */
   template <class PointRange, class TriangleRange, class NamedParameters = parameters::Default_named_parameters>
   Triangle_soup_geodesic_distance_solver(const PointRange& points, const TriangleRange& triangles,

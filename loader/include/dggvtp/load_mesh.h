@@ -82,11 +82,9 @@ inline std::string lower_case_extension(const std::string& path)
   return extension;
 }
 
-// Leaves out the faces marked in `marked` (one per face), with a line "--repair: dropped N faces
-// with a repeated corner" in `repairs` if any.
+// Leaves out the faces marked in `marked` (one per face); returns how many.
 template <class Face>
-void drop_faces(std::vector<Face>& faces, const std::vector<char>& marked, const Repair_option& repair,
-                std::vector<std::string>& repairs)
+std::size_t leave_out(std::vector<Face>& faces, const std::vector<char>& marked)
 {
   std::size_t kept = 0;
   for(std::size_t f = 0; f < faces.size(); ++f)
@@ -96,10 +94,41 @@ void drop_faces(std::vector<Face>& faces, const std::vector<char>& marked, const
         faces[kept] = std::move(faces[f]);
       ++kept;
     }
-  if(kept == faces.size())
-    return;
-  repairs.push_back(repair.name + ": dropped " + std::to_string(faces.size() - kept) + " faces with a repeated corner");
+  const std::size_t dropped = faces.size() - kept;
   faces.resize(kept);
+  return dropped;
+}
+
+// Leaves out the faces marked in `marked` (one per face), with a line "--repair: dropped N faces
+// with a repeated corner" in `repairs` if any.
+template <class Face>
+void drop_faces(std::vector<Face>& faces, const std::vector<char>& marked, const Repair_option& repair,
+                std::vector<std::string>& repairs)
+{
+  if(const std::size_t dropped = leave_out(faces, marked))
+    repairs.push_back(repair.name + ": dropped " + std::to_string(dropped) + " faces with a repeated corner");
+}
+
+// Leaves out every triangle on the same three vertices as one before it, with a line in
+// `repairs`: split into sheets, they would be sheets of one triangle, which the solver refuses
+// (see Vertex_copies.h: windows between them multiply without end), and a path through one of
+// them is as long through the one kept, so that no distance changes.
+inline void drop_repeated_triangles(std::vector<std::vector<std::size_t>>& triangles, std::vector<std::string>& repairs)
+{
+  std::vector<std::pair<std::array<std::size_t, 3>, std::size_t>> corners(triangles.size());
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+  {
+    std::array<std::size_t, 3> c{triangles[f][0], triangles[f][1], triangles[f][2]};
+    std::sort(c.begin(), c.end());
+    corners[f] = {c, f};
+  }
+  std::sort(corners.begin(), corners.end());
+  std::vector<char> repeated(triangles.size(), 0);
+  for(std::size_t k = 1; k < corners.size(); ++k)
+    if(corners[k].first == corners[k - 1].first)
+      repeated[corners[k].second] = 1;
+  if(const std::size_t dropped = leave_out(triangles, repeated))
+    repairs.push_back("dropped " + std::to_string(dropped) + " faces on the same three vertices as another face");
 }
 
 // Every point is the file's own so far: the file's vertices, numbered as in the file (repairs
@@ -335,11 +364,12 @@ CGAL::Surface_mesh<typename Kernel::Point_3> make_triangle_mesh(Loaded_soup& sou
     triangles_to_polygons(soup);
   internal::triangulate_soup(soup);
   // A face that does not fit (inconsistent orientation, more than two faces on an edge) is left
-  // out by the conversion; only then is the soup oriented, which on a clean million-face file
-  // would cost ten times the rest of loading.
+  // out by the conversion; only then are repeated faces dropped and the soup oriented, which on
+  // a clean million-face file would cost ten times the rest of loading.
   auto mesh = internal::soup_to_mesh<Kernel>(soup);
   if(num_faces(mesh) != soup.polygons.size())
   {
+    internal::drop_repeated_triangles(soup.polygons, soup.repairs);
     orient_soup(soup);
     mesh = internal::soup_to_mesh<Kernel>(soup);
     if(num_faces(mesh) != soup.polygons.size())
