@@ -243,6 +243,11 @@ def seconds(stats):
     return sum(stats['seconds_compute_per_rank']), sum(stats['cpu_seconds'])
 
 
+def built_at(path):
+    """When the binary at path was written (UTC), to tell the library it holds."""
+    return datetime.datetime.fromtimestamp(os.path.getmtime(path), datetime.timezone.utc).strftime('%Y-%m-%d %H:%M UTC')
+
+
 def table_header():
     return ['| mesh | vertices | sources | precision | epsilon | max err/eps | at (source, vertex) | max rel. err '
             '| lowest rel. err | violations | of which below | time eps/exact (wall) | (CPU) | exact rows (s) |',
@@ -407,7 +412,9 @@ def main():
     finally:
         shutil.rmtree(workdir, ignore_errors=True)
     load_after = os.getloadavg()
-    stamp = (f"{started} to {datetime.datetime.now().strftime('%H:%M')}, {revision()}, {machine()}, "
+    # the binaries may be older than the checkout: say which were run
+    stamp = (f"{started} to {datetime.datetime.now().strftime('%H:%M')}, {revision()} checked out, binaries of "
+             f"{os.path.abspath(a.build)} (built {built_at(exe)}), {machine()}, "
              f"load average {load_before[0]:.1f} before, {load_after[0]:.1f} after")
     symmetry_table = symmetry_header() + [symmetry_row(r) for r in symmetries] if symmetries else []
     if symmetry_table:
