@@ -148,7 +148,8 @@ vertices where needed (an edge of more than two faces); a vertex where separate 
 meet is kept, and paths may pass through it (a warning on stderr reports each of these). The
 copies of a split vertex are one point: paths go on from each and across a split edge into every
 sheet of it; distances are still reported per vertex of the file, the smallest over the copies
-of a split vertex (a source or target vertex is one on all its copies). Vertices no face uses, and vertices of other
+of a split vertex (a source or target vertex is one on all its copies). A face on the same
+three vertices as another is dropped before splitting. Vertices no face uses, and vertices of other
 connected components than the sources', are unreachable: inf. An unreadable or empty file, a
 non-finite coordinate, a mesh too large for a double (its bounding box, or a face's squared
 edge lengths or area, overflow: scale it down), a face with fewer than 3 or repeated vertices

@@ -70,7 +70,8 @@ repair: the repairs of dggvtp --repair (see read_mesh), the results still per ve
 The mesh goes through dggvtp's input policy: inconsistent orientations are fixed and vertices
 where several sheets meet are split (a RuntimeWarning and `repairs` say so), the copies still one
 point (paths cross from each sheet into the others there); results are still per vertex of V
-(the nearest copy). Degenerate faces, slivers, too short edges and too sharp cone
+(the nearest copy). A face on the same three vertices as another is dropped first (a
+RuntimeWarning). Degenerate faces, slivers, too short edges and too sharp cone
 tips raise ValueError with the library's message.
 
 Queries are const and release the GIL: Python threads may call them on one solver at once.

@@ -117,6 +117,12 @@ def test_non_manifold_vertices_warn():
     # the copies are one point: the other sheets are reached through the edge's ends
     assert np.allclose(solver.distances(2), [1, np.sqrt(2), 0, 2, 2], rtol=1e-15)
 
+    # a needle three times (a fuzz input that hung): sheets of one triangle; one face is kept
+    V = [[0, 0, 0], [1, 0, 0], [0, 0.0041887902047863905, 0]]
+    with pytest.warns(RuntimeWarning, match=r"dropped 2 faces on the same three vertices as another face"):
+        solver = dggvtp.GeodesicSolver(V, [[0, 1, 2], [0, 1, 2], [0, 2, 1]])
+    assert np.allclose(solver.distances(1), [1, 0, np.hypot(1, V[2][1])], rtol=1e-15)
+
 
 def test_point_far_from_the_surface_warns():
     solver = dggvtp.GeodesicSolver(SQUARE, [[0, 1, 2], [0, 2, 3]])
