@@ -69,6 +69,11 @@ struct Tuning
   // than rounding allows.
   static FT rounding_margin(FT scale) { return number<FT>(64) * Number_type_math<FT>::machine_epsilon() * scale; }
 
+  // A window crossing into another sheet (Vertex_copies.h) that lights no more of its edge than
+  // this (relative to the edge) at one of its ends passes through that end, a copy: it is left
+  // to the copy's own windows, whose paths differ from its by the square of this, relatively.
+  static FT sheet_crossing_sliver() { return Number_type_math<FT>::sqrt(Number_type_math<FT>::machine_epsilon()); }
+
   // Radians by which a saddle's shadow cone is widened for rounding (emitting more is safe).
   static FT shadow_widening() { return number<FT>(8) * Number_type_math<FT>::sqrt(rounding_margin(number<FT>(1))); }
 

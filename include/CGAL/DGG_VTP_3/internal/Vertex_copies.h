@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Tuning.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
 
@@ -190,13 +191,27 @@ bool same_point(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index
 // edge enters: opposite(x), if any, then the twins of `x` (the same edge in other sheets). `w`
 // is in the frame of opposite(x), the edge the other way; a twin along the same way as `x` gets
 // it mirrored (its sides swapped, with their relays).
-template <class FT, class Add>
+// A window through one end of the edge, within a sliver of it (Tuning::sheet_crossing_sliver()),
+// enters no other sheet where that end, a copy, has a key no larger than the window's there
+// (`covered(v, key)`): a copy emits all around, into every sheet, and its straight paths reach
+// what the window's rays would at a length longer by at most the sliver's square over the
+// distance. Carried on, such windows circle the copy from sheet to sheet, tied with its key so
+// that no rule prunes them, and multiply at every crossing (a fuzz input, 11 triangles on 5
+// points with edges of 3 to 6 sheets, ran for ever; with this, 313 windows).
+template <class FT, class Add, class Covered>
 void for_each_face_across(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index x, const Window<FT>& w,
-                          Add&& add)
+                          Add&& add, Covered&& covered)
 {
   const auto o = mesh.opposite(x);
   if(o != Unfolded_mesh<FT>::no_halfedge)
     add(o, w);
+  if(mesh.next_twin(x) == x)
+    return;
+  const FT len = mesh.length(x), sliver = Tuning<FT>::sheet_crossing_sliver() * len;
+  // in the frame of opposite(x): the target of x at 0, its source at len
+  if(w.b1 - w.b0 <= sliver && ((w.b0 <= sliver && covered(mesh.target(x), w.distance_to_base_point(number<FT>(0)))) ||
+                               (w.b1 >= len - sliver && covered(mesh.source(x), w.distance_to_base_point(len)))))
+    return;
   for(auto g = mesh.next_twin(x); g != x; g = mesh.next_twin(g))
   {
     if(g == o)
@@ -206,15 +221,23 @@ void for_each_face_across(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<
       add(g, w);
       continue;
     }
-    const FT len = mesh.length(g);
+    const FT along = mesh.length(g);
     Window<FT> m = w;
-    m.b0 = len - w.b1;
-    m.b1 = len - w.b0;
-    m.source.x = len - w.source.x;
+    m.b0 = along - w.b1;
+    m.b1 = along - w.b0;
+    m.source.x = along - w.source.x;
     std::swap(m.relay_left, m.relay_right);
     std::swap(m.relay_left_vertex, m.relay_right_vertex);
     add(g, m);
   }
+}
+
+// as above, for a window that lights its whole edge (from a pseudo-source)
+template <class FT, class Add>
+void for_each_face_across(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index x, const Window<FT>& w,
+                          Add&& add)
+{
+  for_each_face_across(mesh, x, w, add, [](typename Unfolded_mesh<FT>::Index, FT) { return false; });
 }
 
 } // namespace internal

@@ -394,6 +394,9 @@ private:
     // as its CH-relay vertex on that side (line 22); one whose side was cut loses that relay
     const bool left = m_mesh.has_face_across(Mesh::prev(h)), right = m_mesh.has_face_across(Mesh::next(h));
     const Point b{len, number<FT>(0)};
+    const auto into = [this, &p](Index t, const Win& in) { add_window(p, t, in); };
+    // whether copy `v` emits all around at a key at most `key` (see for_each_face_across)
+    const auto covered = [this, &p](Index v, FT key) { return vertex_key(p, v) <= key + T::rounding_margin(key); };
     Win child;
     for(std::size_t i = 0; i < p.buffer.size(); ++i)
     {
@@ -409,8 +412,7 @@ private:
           take_relay(child, child.relay_right, child.relay_right_vertex, length(c - w.source), apex_vertex, m_keys);
         else if(keep.left_end < w.b1)
           child.drop_relay(child.relay_right);
-        for_each_face_across(m_mesh, Mesh::prev(h), with_bound(child, m_keys),
-                             [this, &p](Index t, const Win& in) { add_window(p, t, in); });
+        for_each_face_across(m_mesh, Mesh::prev(h), with_bound(child, m_keys), into, covered);
         if(x < keep.left_end)
           anticipate_stop(p, child, apex_vertex, m_mesh.length(Mesh::prev(h)));
       }
@@ -421,8 +423,7 @@ private:
           take_relay(child, child.relay_left, child.relay_left_vertex, length(c - w.source), apex_vertex, m_keys);
         else if(w.b0 < keep.right_start)
           child.drop_relay(child.relay_left);
-        for_each_face_across(m_mesh, Mesh::next(h), with_bound(child, m_keys),
-                             [this, &p](Index t, const Win& in) { add_window(p, t, in); });
+        for_each_face_across(m_mesh, Mesh::next(h), with_bound(child, m_keys), into, covered);
         if(keep.right_start < x)
           anticipate_stop(p, child, apex_vertex, m_mesh.length(Mesh::next(h)));
       }
