@@ -197,7 +197,8 @@ bool same_point(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index
 // what the window's rays would at a length longer by at most the sliver's square over the
 // distance. Carried on, such windows circle the copy from sheet to sheet, tied with its key so
 // that no rule prunes them, and multiply at every crossing (a fuzz input, 11 triangles on 5
-// points with edges of 3 to 6 sheets, ran for ever; with this, 313 windows).
+// points with edges of 3 to 6 sheets: 215,967 windows from one vertex, beyond the fuzzer's time
+// limit; with this, 357).
 template <class FT, class Add, class Covered>
 void for_each_face_across(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index x, const Window<FT>& w,
                           Add&& add, Covered&& covered)
