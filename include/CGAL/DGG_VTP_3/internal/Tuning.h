@@ -74,6 +74,14 @@ struct Tuning
   // to the copy's own windows, whose paths differ from its by the square of this, relatively.
   static FT sheet_crossing_sliver() { return Number_type_math<FT>::sqrt(Number_type_math<FT>::machine_epsilon()); }
 
+  // ... and its key there is compared with the copy's within this (relative to the key plus the
+  // edge's length) rather than within rounding_margin(): it was unfolded into every face that it
+  // crossed around the copy, each adding the rounding of a few machine epsilons to its source,
+  // and up to pi / min_cone_angle() faces fit around a point (about 6e4 machine epsilons). A fuzz
+  // input (two needles 100 long meeting at a copy) had its windows 2e-12 below the copy's key of
+  // 100, 1.4 rounding margins: they circled it from sheet to sheet for ever.
+  static FT sheet_crossing_tie(FT scale) { return number<FT>(1024) * rounding_margin(scale); }
+
   // Radians by which a saddle's shadow cone is widened for rounding (emitting more is safe).
   static FT shadow_widening() { return number<FT>(8) * Number_type_math<FT>::sqrt(rounding_margin(number<FT>(1))); }
 

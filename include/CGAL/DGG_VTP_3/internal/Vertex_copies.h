@@ -192,13 +192,15 @@ bool same_point(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index
 // is in the frame of opposite(x), the edge the other way; a twin along the same way as `x` gets
 // it mirrored (its sides swapped, with their relays).
 // A window through one end of the edge, within a sliver of it (Tuning::sheet_crossing_sliver()),
-// enters no other sheet where that end, a copy, has a key no larger than the window's there
-// (`covered(v, key)`): a copy emits all around, into every sheet, and its straight paths reach
-// what the window's rays would at a length longer by at most the sliver's square over the
-// distance. Carried on, such windows circle the copy from sheet to sheet, tied with its key so
-// that no rule prunes them, and multiply at every crossing (a fuzz input, 11 triangles on 5
-// points with edges of 3 to 6 sheets: 215,967 windows from one vertex, beyond the fuzzer's time
-// limit; with this, 357).
+// enters no other sheet where that end, a copy, has a key no larger than the window's there, to
+// the rounding of a window unfolded around it (Tuning::sheet_crossing_tie(); `covered(v, key)`:
+// whether v's key is at most `key`): a copy emits all around, into every sheet, and its straight
+// paths reach what the window's rays would at a length longer by at most the sliver's square
+// over the distance. Carried on, such windows circle the copy from sheet to sheet, tied with its
+// key so that no rule prunes them, and multiply at every crossing (fuzz inputs: 11 triangles on
+// 5 points with edges of 3 to 6 sheets, 215,967 windows from one vertex, then 357; two needles
+// meeting at a copy, whose windows' keys drifted below the copy's by 1.4 rounding margins, for
+// ever, then ...).
 template <class FT, class Add, class Covered>
 void for_each_face_across(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index x, const Window<FT>& w,
                           Add&& add, Covered&& covered)
@@ -210,8 +212,10 @@ void for_each_face_across(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<
     return;
   const FT len = mesh.length(x), sliver = Tuning<FT>::sheet_crossing_sliver() * len;
   // in the frame of opposite(x): the target of x at 0, its source at len
-  if(w.b1 - w.b0 <= sliver && ((w.b0 <= sliver && covered(mesh.target(x), w.distance_to_base_point(number<FT>(0)))) ||
-                               (w.b1 >= len - sliver && covered(mesh.source(x), w.distance_to_base_point(len)))))
+  const auto tied = [&](FT key) { return key + Tuning<FT>::sheet_crossing_tie(key + len); };
+  if(w.b1 - w.b0 <= sliver &&
+     ((w.b0 <= sliver && covered(mesh.target(x), tied(w.distance_to_base_point(number<FT>(0))))) ||
+      (w.b1 >= len - sliver && covered(mesh.source(x), tied(w.distance_to_base_point(len))))))
     return;
   for(auto g = mesh.next_twin(x); g != x; g = mesh.next_twin(g))
   {

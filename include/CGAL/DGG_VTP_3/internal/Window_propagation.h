@@ -199,7 +199,7 @@ private:
       if(top.first > m_vertices.distance[v])
         continue; // superseded by a later, shorter distance
       ++p.stats.vertices_popped;
-      // lines 10-13: v as a pseudo-source
+      // lines 10-13: v as a pseudo-source (its copies: for a source, which relax() did not reach)
       Emission_out out{*this, p};
       m_emission.to_copies(v, m_vertices.distance[v], out);
       if(is_dgg() ? m_vertices.is_source[v] || m_vertices.pseudo_sources.emit_at_pop(v) : m_vertices.is_source[v] || m_mesh.is_singular(v))
@@ -267,13 +267,17 @@ private:
   // ---------------------------------------------------------------------------------------------
   // vertices
 
-  // lines 23-24 (see Propagation_vertices::relax), on the patch that owns `v`
+  // lines 23-24 (see Propagation_vertices::relax), on the patch that owns `v`, and v's copies at
+  // once: windows through a copy are compared with its own key (see for_each_face_across)
   void relax(Patch& p, Index v, FT d, Index corner, const Point& direction, Index origin)
   {
-    if(!m_scheduler.template hand_off<typename Scheduler::Relax_message>(p.id, m_partition.owner(v), v, d, corner,
-                                                                          direction, origin) &&
-       m_vertices.relax(v, d, corner, direction, origin))
-      p.queue.push(Queue_entry(m_vertices.distance[v], v));
+    if(m_scheduler.template hand_off<typename Scheduler::Relax_message>(p.id, m_partition.owner(v), v, d, corner,
+                                                                         direction, origin) ||
+       !m_vertices.relax(v, d, corner, direction, origin))
+      return;
+    p.queue.push(Queue_entry(m_vertices.distance[v], v));
+    Emission_out out{*this, p};
+    m_emission.to_copies(v, m_vertices.distance[v], out);
   }
 
   // what the pseudo-sources of patch `patch` send out (see Pseudo_source_emission)
@@ -396,7 +400,7 @@ private:
     const Point b{len, number<FT>(0)};
     const auto into = [this, &p](Index t, const Win& in) { add_window(p, t, in); };
     // whether copy `v` emits all around at a key at most `key` (see for_each_face_across)
-    const auto covered = [this, &p](Index v, FT key) { return vertex_key(p, v) <= key + T::rounding_margin(key); };
+    const auto covered = [this, &p](Index v, FT key) { return vertex_key(p, v) <= key; };
     Win child;
     for(std::size_t i = 0; i < p.buffer.size(); ++i)
     {
@@ -432,10 +436,7 @@ private:
 
   // the keys of the ends of the edge of halfedge `h` (its source a, its target b) for the ICH rule,
   // from the distances patch `p` sees (see Propagation_vertices::key)
-  struct End_keys
-  {
-    FT a, b;
-  };
+  struct End_keys { FT a, b; };
   End_keys end_keys(const Patch& p, Index h) const
   {
     return End_keys{vertex_key(p, m_mesh.source(h)), vertex_key(p, m_mesh.target(h))};
