@@ -52,7 +52,10 @@ namespace DGG_VTP_3 {
  * makes a soup so, splitting vertices where needed; given the copies it makes as `copy_of`, the
  * sheets it splits apart stay one surface, an edge of three triangles included). Vertices where
  * several fans of triangles meet are kept (see `number_of_non_manifold_vertices()`), and points no
- * triangle uses are unreachable.
+ * triangle uses are unreachable. Where sheets meet along an edge, a query also throws
+ * `std::invalid_argument` once its propagation has made more than 10,000 + 1,000 x (number of
+ * triangles) windows: around a sharp corner there, windows crossing between the sheets can
+ * multiply faster than they are pruned (meshes make 10 to 50 per triangle).
  *
  * \tparam GeomTraits a model of `DGGVTPTraits_3`; its `FT` is the number type of the results.
  */

@@ -82,6 +82,14 @@ struct Tuning
   // 100, 1.4 rounding margins: they circled it from sheet to sheet for ever.
   static FT sheet_crossing_tie(FT scale) { return number<FT>(1024) * rounding_margin(scale); }
 
+  // On a mesh with edges between sheets, windows crossing between the sheets around a sharp
+  // corner can still multiply faster than the rules prune them (a fuzz input: needles 20,000 long
+  // at a point of 7 sheets, windows a few 1e-4 from it, tied with its key, for ever); a
+  // propagation that makes more windows than this there is refused (std::invalid_argument) rather
+  // than left to run. Meshes make 10 to 50 windows per face (bunny_1M: 15 at 1e-4; the fuzz
+  // inputs that no longer hang, 5 to 400).
+  static std::size_t max_windows_between_sheets(std::size_t faces) { return 10000 + 1000 * faces; }
+
   // Radians by which a saddle's shadow cone is widened for rounding (emitting more is safe).
   static FT shadow_widening() { return number<FT>(8) * Number_type_math<FT>::sqrt(rounding_margin(number<FT>(1))); }
 

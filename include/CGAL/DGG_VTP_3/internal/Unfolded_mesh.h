@@ -117,6 +117,7 @@ public:
   // edge of `h` enters the faces of opposite(h) and of these (see for_each_face_across()).
   Index next_copy(Index v) const { return m_next_copy.empty() ? v : m_next_copy[v]; }
   Index next_twin(Index h) const { return m_next_twin.empty() ? h : m_next_twin[h]; }
+  bool has_twins() const { return !m_next_twin.empty(); }
   bool has_face_across(Index h) const { return m_opposite[h] != no_halfedge || next_twin(h) != h; }
 
   template <class ConcurrencyTag, class FT_>

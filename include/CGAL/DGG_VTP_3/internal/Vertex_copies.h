@@ -245,6 +245,24 @@ void for_each_face_across(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<
   for_each_face_across(mesh, x, w, add, [](typename Unfolded_mesh<FT>::Index, FT) { return false; });
 }
 
+// The most windows a propagation on `mesh` may make: Tuning::max_windows_between_sheets() where
+// an edge is between sheets, none (0) otherwise.
+template <class FT>
+std::size_t window_limit(const Unfolded_mesh<FT>& mesh)
+{
+  return mesh.has_twins() ? Tuning<FT>::max_windows_between_sheets(mesh.number_of_faces()) : 0;
+}
+
+// throws std::invalid_argument once `created` windows are beyond `limit` (see window_limit())
+inline void refuse_windows_beyond(std::size_t limit, std::size_t created)
+{
+  if(limit != 0 && created > limit)
+    throw std::invalid_argument(
+      "the propagation made more than " + std::to_string(limit) + " windows on a mesh with edges of more than two "
+      "triangles: windows crossing between their sheets around a sharp corner multiply without end; leave "
+      "out the extra triangles at those edges, or the sharp corner");
+}
+
 } // namespace internal
 } // namespace DGG_VTP_3
 } // namespace CGAL

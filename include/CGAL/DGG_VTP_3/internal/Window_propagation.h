@@ -85,6 +85,7 @@ public:
     , m_vertices(mesh, m_keys)
     , m_in_region(mesh.number_of_faces(), 0)
     , m_scheduled(mesh.number_of_halfedges(), 0)
+    , m_window_limit(window_limit(mesh))
   {
     for(Index k = 0; k < partition.size(); ++k)
       m_patches.emplace_back(k, partition.first_face(k), partition.end_face(k, mesh.number_of_faces()));
@@ -148,8 +149,7 @@ private:
   using Queue = boost::heap::d_ary_heap<Queue_entry, boost::heap::arity<4>,
                                         boost::heap::compare<std::greater<Queue_entry>>>;
 
-  // one patch of faces: its window lists (those of its faces' halfedges), its vertices' queue, and
-  // the scratch of propagating them
+  // one patch of faces: its halfedges' window lists, its vertices' queue, the scratch of propagating
   struct Patch
   {
     Patch(Index id, Index first_face, Index end_face)
@@ -245,9 +245,8 @@ private:
   void receive(Index k, const typename Scheduler::Face_message& m) { enter_face(m_patches[k], m.face); }
   void receive(Index k, const typename Scheduler::Relay_message& m) { make_emitter(m_patches[k], m.vertex); }
 
-  // A window list can only be waiting outside R if none of its face's vertices was ever reached,
-  // which well-formed input does not produce; rather than lose its windows, such faces are
-  // brought into R when nothing else is left to do.
+  // A window list waits outside R only if none of its face's vertices was ever reached (never,
+  // on well-formed input); rather than lose its windows, its face enters R when nothing else is left.
   bool schedule_stranded_lists(std::vector<Index>& active)
   {
     for(Patch& p : m_patches)
@@ -362,6 +361,7 @@ private:
   // edge (a, b) towards the apex c, and leave through edge (c, a) (left) or (b, c) (right).
   void propagate_window_list(Patch& p, Index h)
   {
+    refuse_windows_beyond(m_window_limit, p.lists.created());
     p.lists.take(h - p.first_halfedge, p.buffer);
     const Index apex_vertex = m_mesh.source(Mesh::prev(h));
     const Point c = m_mesh.apex(h);
@@ -485,6 +485,7 @@ private:
   Propagation_vertices<FT> m_vertices; // per vertex: distance, arrivals, (pseudo-)source
   std::vector<char> m_in_region;      // per face: inside the propagation region R
   std::vector<char> m_scheduled;      // per halfedge: its window list is in its patch's FIFO
+  const std::size_t m_window_limit;   // see window_limit()
   std::deque<Patch> m_patches;        // a deque: a patch never moves
   const Propagation_query<FT>* m_query = nullptr;
   std::chrono::steady_clock::time_point m_next_report; // of the progress callback (the first: at once)
