@@ -200,7 +200,7 @@ bool same_point(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index
 // key so that no rule prunes them, and multiply at every crossing (fuzz inputs: 11 triangles on
 // 5 points with edges of 3 to 6 sheets, 215,967 windows from one vertex, then 357; two needles
 // meeting at a copy, whose windows' keys drifted below the copy's by 1.4 rounding margins, for
-// ever, then ...).
+// ever, then 2,234).
 template <class FT, class Add, class Covered>
 void for_each_face_across(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index x, const Window<FT>& w,
                           Add&& add, Covered&& covered)
