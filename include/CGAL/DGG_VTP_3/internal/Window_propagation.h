@@ -93,8 +93,9 @@ public:
 
   static FT infinity() { return Number_type_math<FT>::infinity(); }
 
-  // The distance to the nearest of the sources: they all start at 0 and emit all around (lines
-  // 1-8), as far as the query needs.
+  // The distance to the nearest of the sources: they all start at 0, with their copies (relax()
+  // relays every later distance to a vertex's copies), and emit all around (lines 1-8), as far as
+  // the query needs.
   template <class ConcurrencyTag>
   void run(const Propagation_query<FT>& query)
   {
@@ -107,14 +108,15 @@ public:
       m_vertices.set_source(s, query.source_numbers[k]);
       m_scheduler.commit(s, number<FT>(0));
       m_patches[m_partition.owner(s)].queue.push(Queue_entry(number<FT>(0), s));
+      Emission_out out{*this, m_patches[m_partition.owner(s)]};
+      m_emission.to_copies(s, number<FT>(0), out);
     }
     m_targets = Point_targets<FT>(m_mesh, query.point_targets);
     const auto out_in_face = [this](Index f) { return Emission_out{*this, m_patches[m_partition.patch_of_face(f)]}; };
     for(std::size_t k = 0; k < query.point_sources.size(); ++k)
       m_emission.from_surface_point(query.point_sources[k], nv + query.source_numbers[query.vertex_sources.size() + k],
                                     out_in_face);
-    if(!query.point_sources.empty())
-      m_scheduler.template deliver_now<ConcurrencyTag>(*this);
+    m_scheduler.template deliver_now<ConcurrencyTag>(*this);
     m_scheduler.template run<ConcurrencyTag>(*this, m_stats.windows_peak);
     for(Patch& p : m_patches)
     {
@@ -199,9 +201,7 @@ private:
       if(top.first > m_vertices.distance[v])
         continue; // superseded by a later, shorter distance
       ++p.stats.vertices_popped;
-      // lines 10-13: v as a pseudo-source (its copies: for a source, which relax() did not reach)
-      Emission_out out{*this, p};
-      m_emission.to_copies(v, m_vertices.distance[v], out);
+      Emission_out out{*this, p}; // lines 10-13: v as a pseudo-source
       if(is_dgg() ? m_vertices.is_source[v] || m_vertices.pseudo_sources.emit_at_pop(v) : m_vertices.is_source[v] || m_mesh.is_singular(v))
         m_emission.all_around(v, m_vertices.distance[v], out);
       else if(!is_dgg() && m_mesh.is_exact_pseudo_source(v))
