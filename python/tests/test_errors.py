@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 import dggvtp
+from conftest import CLI_DATA
 
 TETRA_V = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
 TETRA_F = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
@@ -138,10 +139,7 @@ def test_windows_between_sheets_are_refused():
     # A fuzz input (cli.needles_of_seven_sheets_are_refused): needles 20,000 long at point 4, of 7
     # sheets, whose windows circle the point for ever from vertex 3; the query is refused past
     # the window limit, with the message of dggvtp, rather than left to run.
-    V = [[0, 0, 0], [1, 0, 0], [1, 1, 1], [0, 2, 5], [19999, 0, 1], [1, 1, 3], [0, 2, 1], [0, 0, 1], [0, 0, 1]]
-    F = [[3, 0, 1], [2, 4, 3], [5, 2, 4], [0, 4, 1], [2, 0, 3], [0, 2, 4], [2, 0, 7], [4, 0, 3], [2, 1, 4],
-         [2, 0, 8], [6, 0, 3], [4, 0, 5], [2, 5, 3], [3, 1, 4], [3, 1, 2]]
-    solver = dggvtp.GeodesicSolver(V, F)
+    solver = dggvtp.GeodesicSolver(*dggvtp.read_mesh(str(CLI_DATA / "needles_of_seven_sheets.off")))
     for epsilon in (0, 1e-3):
         with pytest.raises(ValueError, match="windows crossing between their sheets"):
             solver.distances(3, epsilon=epsilon)
