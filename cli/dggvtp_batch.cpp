@@ -700,13 +700,15 @@ void finish_checkpoint(const Checkpoint& checkpoint, const std::string& output)
 using Row_function = std::function<std::vector<double>(std::size_t file_vertex, bool parallel)>;
 // computes the rows of several sources, each one sequential propagation, on `threads` threads (0 =
 // all cores), and hands each to `done` (from any thread) with its number in `file_vertices`
-using Rows_function = std::function<void(const std::vector<std::size_t>& file_vertices, long threads,
-                                         const std::function<void(std::size_t, const std::vector<double>&)>& done)>;
+template <class Row>
+using Rows_function =
+  std::function<void(const std::vector<std::size_t>& file_vertices, long threads, const std::function<void(std::size_t, Row&&)>& done)>;
 
 struct Prepared
 {
   Row_function row;
-  Rows_function rows;
+  Rows_function<std::vector<double>> rows;
+  Rows_function<dggvtp::Sparse_row> local_rows; // --max-distance: the vertices within it, in the time of those
   std::size_t faces = 0;
   double seconds_make_mesh = 0., seconds_prepare = 0.; // the input policy's repairs, the rest
   std::size_t threads = 1; // that prepare the solver, and that --threads gives the rows
@@ -746,13 +748,9 @@ Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, doub
         sources, CGAL::make_property_map(d), np);
     return dggvtp::file_vertex_distances(*soup, d);
   };
-  prepared.rows = [soup, solver, np](const std::vector<std::size_t>& file_vertices, long threads,
-                                          const std::function<void(std::size_t, const std::vector<double>&)>& done) {
+  // the rows of `file_vertices`, each handed to `row` as the library gives it
+  const auto each_row = [soup, solver, np](const std::vector<std::size_t>& file_vertices, long threads, const auto& row) {
     const std::vector<std::vector<std::size_t>> sets = dggvtp::solver_vertex_sets(*soup, file_vertices);
-    const auto row = [&](std::size_t k, const std::vector<typename Solver::FT>& d,
-                         const CGAL::DGG_VTP_3::Propagation_statistics&) {
-      done(k, dggvtp::file_vertex_distances(*soup, d));
-    };
 #ifdef CGAL_LINKED_WITH_TBB
     if(threads != 1 && file_vertices.size() > 1)
     {
@@ -766,6 +764,22 @@ Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, doub
     (void)threads;
 #endif
     (*solver)->template compute_distances_from_each_source_set<CGAL::Sequential_tag>(sets, row, np);
+  };
+  prepared.rows = [soup, each_row](const std::vector<std::size_t>& file_vertices, long threads,
+                                   const std::function<void(std::size_t, std::vector<double>&&)>& done) {
+    each_row(file_vertices, threads, [&](std::size_t k, const std::vector<typename Solver::FT>& d,
+                                         const CGAL::DGG_VTP_3::Propagation_statistics&) {
+      done(k, dggvtp::file_vertex_distances(*soup, d));
+    });
+  };
+  prepared.local_rows = [soup, each_row](const std::vector<std::size_t>& file_vertices, long threads,
+                                         const std::function<void(std::size_t, dggvtp::Sparse_row&&)>& done) {
+    each_row(file_vertices, threads, [&](std::size_t k, const std::vector<typename Solver::FT>& d,
+                                         const CGAL::DGG_VTP_3::Propagation_statistics&, const auto& reached) {
+      dggvtp::Sparse_row row;
+      dggvtp::sparse_row(*soup, d, reached, nullptr, row);
+      done(k, std::move(row));
+    });
   };
   return prepared;
 }
@@ -1110,8 +1124,8 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
       std::optional<Progress> progress;
       if(show_progress)
         progress.emplace([&] { return durable.load(); }, sources.rows, 0);
-      one.prepared.rows(sources.vertices, threads, [&](std::size_t i, const std::vector<double>& row) {
-        dggvtp::sparse_row(row, local_rows[i]);
+      one.prepared.local_rows(sources.vertices, threads, [&](std::size_t i, dggvtp::Sparse_row&& row) {
+        local_rows[i] = std::move(row);
         ++durable;
       });
       computed = sources.rows;

@@ -7,10 +7,16 @@ against each other; and the dense paths (distances_from_each) for comparison. Pr
 usage: PYTHONPATH=build/python /usr/bin/python3 benchmark/DGG_VTP_3/local_matrix.py
            [--batch build/bin/dggvtp-batch] [--mesh FILE | --icosphere LEVEL] [--neighbours 100]
            [--threads 2] [--check all|K] [--dense-rows 400] [--full-rows 8] [--fixed-cost K]
+           [--levels 5,6,7 [--gdist]]
 Each measurement runs in a process of its own (peak RSS: ru_maxrss of that process); the mesh is
 generated (level 7: 163,842 vertices, unit sphere) into a temporary directory, never stored.
 --fixed-cost K measures only what a row costs whatever its radius: K rows (spread over the mesh) at
-max_distance 0 and at D, alternated 3 times in one process, one thread."""
+max_distance 0 and at D, alternated 3 times in one process, one thread.
+--levels L1,L2,...: the side-by-side of issue 42 (Table 11): per icosphere level, the whole matrix
+by local_distance_matrix on one thread (exact), on --threads threads (exact) and on one thread at
+accuracy 1e-3, each in a process of its own; with --gdist, also gdist's local_gdist_matrix on one
+thread when `import gdist` works (tvb-gdist, a benchmark peer built outside the repository: see
+the benchmark README), and the largest difference of its entries from ours."""
 import argparse
 import json
 import math
@@ -85,8 +91,15 @@ def child(args):
         out["rows"] = len(rows)
         out["ms_per_row_at_0"] = statistics.median(times[0.0]) / len(rows) * 1e3
         out["ms_per_row_at_D"] = statistics.median(times[args.max_distance]) / len(rows) * 1e3
+    elif args.child == "gdist":
+        import gdist
+        M = gdist.local_gdist_matrix(np.ascontiguousarray(V, dtype=np.float64),
+                                     np.ascontiguousarray(F, dtype=np.int32), max_distance=args.max_distance)
+        out["seconds"] = time.perf_counter() - t0
+        out["nnz"] = int(M.nnz)
+        scipy.sparse.save_npz(args.save, M.tocsr(), compressed=False)
     elif args.child == "sparse":
-        M = solver.local_distance_matrix(args.max_distance, threads=args.threads)
+        M = solver.local_distance_matrix(args.max_distance, threads=args.threads, epsilon=args.epsilon)
         out["seconds"] = time.perf_counter() - t0
         out["nnz"] = int(M.nnz)
         out["matrix_mb"] = (M.data.nbytes + M.indices.nbytes + M.indptr.nbytes) / 2**20
@@ -104,7 +117,7 @@ def child(args):
 
 def measure(args, kind, **extra):
     command = [sys.executable, __file__, "--child", kind, "--mesh", args.mesh, "--threads", str(args.threads),
-               "--max-distance", repr(args.max_distance)]
+               "--max-distance", repr(args.max_distance), "--epsilon", repr(args.epsilon)]
     for k, v in extra.items():
         command += [f"--{k}", str(v)]
     result = subprocess.run(command, check=True, capture_output=True, text=True)
@@ -132,6 +145,59 @@ def check_rows(mesh, M, D, rows, threads):
     return bad
 
 
+def levels(args):
+    """Table 11 of issue 42: per level, the whole matrix by each path, one process each"""
+    import copy
+    import scipy.sparse
+    rows = []
+    for level in [int(x) for x in args.levels.split(",")]:
+        with tempfile.TemporaryDirectory() as tmp:
+            tmp = pathlib.Path(tmp)
+            a = copy.copy(args)
+            a.mesh = str(tmp / f"icosphere_{level}.ply")
+            V, F = icosphere(level)
+            write_ply(a.mesh, V, F)
+            area = 0.5 * np.linalg.norm(np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]]), axis=1).sum()
+            a.max_distance = math.sqrt(args.neighbours * area / len(V) / math.pi)
+            row = {"level": level, "vertices": len(V), "D": a.max_distance}
+            for name, threads, epsilon in (("one", 1, 0.), ("threads", args.threads, 0.), ("eps", 1, 1e-3)):
+                a.threads, a.epsilon = threads, epsilon
+                row[name] = measure(a, "sparse", save=tmp / f"{name}.npz")
+                print(f"level {level}, {name}: {row[name]}", flush=True)
+            ours = scipy.sparse.load_npz(tmp / "one.npz")
+            row["entries"] = ours.nnz
+            if args.gdist:
+                try:
+                    import gdist  # noqa: F401
+                except ImportError:
+                    print("gdist is not importable: its column is left empty", flush=True)
+                else:
+                    a.threads, a.epsilon = 1, 0.
+                    row["gdist"] = measure(a, "gdist", save=tmp / "gdist.npz")
+                    G = scipy.sparse.load_npz(tmp / "gdist.npz")
+                    # gdist stores no zero on the diagonal: compare the off-diagonal entries
+                    ours_off = ours - scipy.sparse.diags(ours.diagonal())
+                    ours_off.eliminate_zeros()
+                    row["gdist_max_difference"] = float(abs(G - ours_off).max())
+                    row["gdist_entries"] = G.nnz
+                    print(f"level {level}, gdist: {row['gdist']}, largest difference {row['gdist_max_difference']:.3g}",
+                          flush=True)
+            rows.append(row)
+    print(f"\n| level | vertices | D | entries a row | gdist, 1 thread | ours, 1 thread | gdist / ours | ours, "
+          f"{args.threads} threads | ours, 1e-3, 1 thread | per row, 1 thread |")
+    print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for r in rows:
+        g = r.get("gdist")
+        gdist_time = f"{g['seconds']:.2f} s" if g else "not run"
+        ratio = f"{g['seconds'] / r['one']['seconds']:.1f}" if g else ""
+        print(f"| {r['level']} | {r['vertices']:,} | {r['D']:.6g} | {r['entries'] / r['vertices']:.1f} | "
+              f"{gdist_time} | {r['one']['seconds']:.2f} s | {ratio} | {r['threads']['seconds']:.2f} s | "
+              f"{r['eps']['seconds']:.2f} s | {r['one']['seconds'] / r['vertices'] * 1e3:.3f} ms |")
+    print("\npeak RSS (MB) of local_distance_matrix, 1 thread, and of its result: " +
+          ", ".join(f"level {r['level']}: {r['one']['peak_mb']:.0f} ({r['one']['prepared_mb']:.0f} prepared, "
+                    f"matrix {r['one']['matrix_mb']:.0f})" for r in rows))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--batch", default=str(pathlib.Path(__file__).resolve().parents[2] / "build" / "bin" / "dggvtp-batch"))
@@ -147,12 +213,17 @@ def main():
     parser.add_argument("--max-distance", type=float)
     parser.add_argument("--save")
     parser.add_argument("--rows", type=int)
+    parser.add_argument("--epsilon", type=float, default=0.)
+    parser.add_argument("--levels")
+    parser.add_argument("--gdist", action="store_true")
     args = parser.parse_args()
     if args.child:
         return child(args)
 
     import dggvtp
     import scipy.sparse
+    if args.levels:
+        return levels(args)
     if args.fixed_cost:
         args.threads = 1
     with tempfile.TemporaryDirectory() as tmp:

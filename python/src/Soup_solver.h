@@ -170,9 +170,10 @@ public:
         file_vertices.push_back(m_record.file_vertex(v, "source")); // a merged vertex: the one at its place
       }
     }
-    const auto done = [&](std::size_t k, const std::vector<FT>& d, const CGAL::DGG_VTP_3::Propagation_statistics&) {
+    const auto done = [&](std::size_t k, const std::vector<FT>& d, const CGAL::DGG_VTP_3::Propagation_statistics&,
+                          const auto& reached) {
       Sparse_row r;
-      sparse_row(m_soup, d, &m_merged, r);
+      sparse_row(m_soup, d, reached, &m_merged, r);
       row(computed[k], std::move(r));
     };
     const auto sets = solver_vertex_sets(m_soup, file_vertices);

@@ -28,6 +28,10 @@
 #include <utility>
 #include <vector>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 namespace py = pybind11;
 using namespace pybind11::literals;
 
@@ -218,10 +222,11 @@ std::pair<py::array_t<double>, py::array_t<std::int64_t>> read_mesh(const Path& 
   return {V, F};
 }
 
-// The rows as scipy.sparse.csr_matrix((data, indices, indptr), shape): int32 indices, as SciPy
-// makes them, unless the matrix is too large for them
+// The rows as scipy.sparse.csr_matrix((data, indices, indptr), shape), or, `by_column`, as
+// scipy.sparse.csc_matrix of shape (columns, rows.size()) (the rows are then its columns): int32
+// indices, as SciPy makes them, unless the matrix is too large for them
 template <class Index>
-py::object csr_matrix(std::vector<dggvtp::Sparse_row>& rows, std::size_t columns)
+py::object compressed_matrix(std::vector<dggvtp::Sparse_row>& rows, std::size_t columns, bool by_column)
 {
   std::size_t nonzeros = 0;
   for(const auto& r : rows)
@@ -233,7 +238,7 @@ py::object csr_matrix(std::vector<dggvtp::Sparse_row>& rows, std::size_t columns
     double* d = data.mutable_data();
     Index* i = indices.mutable_data();
     Index* p = indptr.mutable_data();
-    std::size_t at = 0;
+    std::size_t at = 0, freed = 0;
     p[0] = 0;
     for(std::size_t k = 0; k < rows.size(); ++k)
     {
@@ -241,10 +246,24 @@ py::object csr_matrix(std::vector<dggvtp::Sparse_row>& rows, std::size_t columns
       std::copy(rows[k].columns.begin(), rows[k].columns.end(), i + at);
       at += rows[k].columns.size();
       p[k + 1] = Index(at);
+      freed += rows[k].columns.size() * (sizeof(std::uint32_t) + sizeof(double));
       dggvtp::Sparse_row().columns.swap(rows[k].columns); // its memory back, row by row
       std::vector<double>().swap(rows[k].values);
+#ifdef __GLIBC__
+      // The rows are small blocks that malloc keeps for reuse; handed back to the system as they
+      // are copied, the peak is about one copy of the matrix, not two: the arrays' pages (mapped,
+      // not yet touched) become resident only as they are written.
+      if(freed > (std::size_t(32) << 20))
+      {
+        malloc_trim(0);
+        freed = 0;
+      }
+#endif
     }
   }
+  if(by_column)
+    return py::module_::import("scipy.sparse")
+      .attr("csc_matrix")(py::make_tuple(data, indices, indptr), "shape"_a = py::make_tuple(columns, rows.size()));
   return py::module_::import("scipy.sparse")
     .attr("csr_matrix")(py::make_tuple(data, indices, indptr), "shape"_a = py::make_tuple(rows.size(), columns));
 }
@@ -340,10 +359,14 @@ PYBIND11_MODULE(_dggvtp, m)
     .def(
       "local_distance_matrix",
       [](const Geodesic_solver& s, double max_distance, const Vertices& sources, double epsilon,
-         long threads) -> Sparse_matrix {
+         long threads, bool symmetric, const std::string& format) -> Sparse_matrix {
         if(!(max_distance >= 0.) || std::isinf(max_distance))
           bad("max_distance must be a finite number >= 0 (the matrix holds the distances up to it), not " +
               number_text(max_distance) + ": distances_from_each() gives every distance");
+        if(format != "csr" && format != "csc")
+          bad("format must be 'csr' or 'csc' (scipy.sparse's names), not '" + format + "'");
+        if(symmetric && !sources.object.is_none())
+          bad("symmetric=True needs the square matrix of every vertex: leave sources=None");
         Query q = s.query(epsilon, max_distance, threads);
         q.sources = vertex_places(sources, "source", s.vertices());
         if(!sources.object.is_none() && q.sources.empty())
@@ -352,17 +375,32 @@ PYBIND11_MODULE(_dggvtp, m)
         {
           py::gil_scoped_release unlocked;
           s.solver->local_distance_matrix(q, [&rows](std::size_t k, dggvtp::Sparse_row&& row) { rows[k] = std::move(row); });
+          if(symmetric)
+            dggvtp::make_symmetric(rows);
         }
+        // a symmetric matrix's rows are its columns; otherwise CSC is the CSR of the transpose
+        const bool by_column = format == "csc";
+        const std::size_t sources_count = rows.size();
+        if(by_column && !symmetric)
+        {
+          py::gil_scoped_release unlocked;
+          rows = dggvtp::transposed(rows, s.vertices());
+#ifdef __GLIBC__
+          malloc_trim(0); // the rows' memory, emptied while transposing
+#endif
+        }
+        const std::size_t columns = by_column && !symmetric ? sources_count : s.vertices();
+        const std::size_t rows_out = rows.size();
         const std::uint64_t int32_max = std::uint64_t(std::numeric_limits<std::int32_t>::max());
         std::uint64_t nonzeros = 0;
         for(const auto& r : rows)
           nonzeros += r.columns.size();
-        if(nonzeros <= int32_max && s.vertices() <= int32_max)
-          return {csr_matrix<std::int32_t>(rows, s.vertices())};
-        return {csr_matrix<std::int64_t>(rows, s.vertices())};
+        if(nonzeros <= int32_max && (std::max)(columns, rows_out) <= int32_max)
+          return {compressed_matrix<std::int32_t>(rows, columns, by_column)};
+        return {compressed_matrix<std::int64_t>(rows, columns, by_column)};
       },
       "max_distance"_a, "sources"_a = py::none(), py::kw_only(), "epsilon"_a = 0., "threads"_a = 1,
-      doc::local_distance_matrix);
+      "symmetric"_a = false, "format"_a = "csr", doc::local_distance_matrix);
   def_targets_query(
     solver, "target_distances",
     [](const Geodesic_solver& s, Query& q, const Named_places& named_sources, const Named_places& named_targets) {

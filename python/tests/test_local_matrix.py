@@ -111,3 +111,41 @@ def test_dggvtp_batch_writes_the_same_npz(tmp_path):
         assert isinstance(M, scipy.sparse.csr_matrix) and M.shape == expected.shape
         for a in ("data", "indices", "indptr"):
             assert same_bits(getattr(M, a), getattr(expected, a)), a
+
+
+def test_csc_and_symmetric_against_dense_rows(lion):
+    # format='csc' is the same matrix by columns (gdist's format); symmetric=True keeps of each pair
+    # the smaller of the two directions, an entry in one direction only (the other beyond the
+    # radius) as it is; both checked against the dense rows, at 0 and at an accuracy
+    V, F, solver = lion
+    D = radius(V, F, 20)
+    for epsilon in (0.0, 1e-2):
+        M = solver.local_distance_matrix(D, epsilon=epsilon)
+        C = solver.local_distance_matrix(D, epsilon=epsilon, format="csc")
+        assert isinstance(C, scipy.sparse.csc_matrix) and C.shape == M.shape and C.has_sorted_indices
+        assert (C != M).nnz == 0 and same_bits(C.tocsr().data, M.data)
+        sources = [5000, 17, 8000]
+        Cs = solver.local_distance_matrix(D, sources, epsilon=epsilon, format="csc")
+        assert isinstance(Cs, scipy.sparse.csc_matrix) and Cs.shape == (3, len(V))
+        for k, s in enumerate(sources):
+            assert same_bits(Cs.getrow(k).toarray().ravel()[Cs.getrow(k).indices],
+                             M.getrow(s).data), s
+        S = solver.local_distance_matrix(D, epsilon=epsilon, symmetric=True)
+        assert isinstance(S, scipy.sparse.csr_matrix) and (S != S.T).nnz == 0
+        rows = range(0, len(V), 97)
+        for k in rows:
+            row = solver.distances(k, max_distance=D, epsilon=epsilon)
+            column = np.array([solver.distances(j, max_distance=D, epsilon=epsilon)[k] for j in S.getrow(k).indices])
+            expected = np.minimum(row[S.getrow(k).indices], column)
+            assert same_bits(S.getrow(k).data, expected), k
+            assert set(S.getrow(k).indices) >= set(np.flatnonzero(np.isfinite(row))), k
+        SC = solver.local_distance_matrix(D, epsilon=epsilon, symmetric=True, format="csc")
+        assert isinstance(SC, scipy.sparse.csc_matrix) and (SC != S).nnz == 0
+
+
+def test_format_and_symmetric_are_checked(lion):
+    V, F, solver = lion
+    with pytest.raises(ValueError, match="format must be 'csr' or 'csc'"):
+        solver.local_distance_matrix(0.1, format="coo")
+    with pytest.raises(ValueError, match="symmetric=True needs the square matrix"):
+        solver.local_distance_matrix(0.1, [1, 2], symmetric=True)

@@ -42,7 +42,8 @@ class GeodesicSolver:
     def distances_from_each(self, sources: _Vertices, *, epsilon: float = 0.0, max_distance: float = ...,
                             threads: int = 1) -> _Distances: ...
     def local_distance_matrix(self, max_distance: float, sources: _Vertices = None, *, epsilon: float = 0.0,
-                              threads: int = 1) -> scipy.sparse.csr_matrix: ...
+                              threads: int = 1, symmetric: bool = False,
+                              format: str = 'csr') -> scipy.sparse.csr_matrix | scipy.sparse.csc_matrix: ...
     def target_distances(self, sources: _Vertices = None, *, points: _Points = None, face_points: _FacePoints = None,
                          targets: _Vertices = None, target_points: _Points = None,
                          target_face_points: _FacePoints = None, epsilon: float = 0.0, max_distance: float = ...,

@@ -14,6 +14,8 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Index_set.h>
+#include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Key_ratio.h>
 #include <CGAL/DGG_VTP_3/internal/Pseudo_source_emission.h>
 #include <CGAL/DGG_VTP_3/internal/Pseudo_source_states.h>
@@ -32,7 +34,9 @@ namespace internal {
 
 // What one propagation knows of the vertices: the shortest distance found so far, the directions
 // the paths of that length arrive from, which vertices are sources or pseudo-sources, and what the
-// query asks to record of the paths (their pseudo-sources, where they arrive from).
+// query asks to record of the paths (their pseudo-sources, where they arrive from). Kept from one
+// propagation to the next on the same mesh: reset() puts back what the last one changed, the
+// vertices it reached (every change is to a vertex once it has a distance).
 template <class FT>
 class Propagation_vertices
 {
@@ -50,31 +54,76 @@ public:
   };
   static Index no_origin() { return Index(-1); }
 
-  // `keys`: the key ratio of the propagation
-  Propagation_vertices(const Mesh& mesh, const Key_ratio<FT>& keys)
+  // `partition`: the patches that change the vertices, each its own vertices (see Round_scheduler)
+  Propagation_vertices(const Mesh& mesh, const Patch_partition<FT>& partition)
     : m_mesh(mesh)
-    , m_keys(keys)
+    , m_partition(partition)
+    , m_keys(number<FT>(0), mesh.number_of_vertices())
+    , m_reached_by_patch(mesh.number_of_vertices(), partition.size())
     , distance(mesh.number_of_vertices(), Number_type_math<FT>::infinity())
     , incoming(mesh.number_of_vertices())
     , is_source(mesh.number_of_vertices(), 0)
-    , pseudo_sources(mesh, !keys.is_exact())
+    , pseudo_sources(mesh, partition)
   {}
 
-  void record(bool origins, bool arrivals)
+  // Every vertex unreached, for a propagation of key ratio `keys` that records the pseudo-sources
+  // of the paths (`origins`) and where they arrive from (`arrivals`); the records of a propagation
+  // that did not ask for them are empty.
+  void reset(const Key_ratio<FT>& keys, bool origins, bool arrivals)
   {
-    if(origins)
-      origin.assign(distance.size(), no_origin());
-    if(arrivals)
-      arrival.assign(distance.size(), Arrival{Mesh::no_halfedge, Point{number<FT>(0), number<FT>(0)}});
+    for(Index v : m_reached)
+    {
+      distance[v] = Number_type_math<FT>::infinity();
+      incoming[v] = Incoming_directions<FT>();
+      is_source[v] = 0;
+      if(!m_origin.empty())
+        m_origin[v] = no_origin();
+      if(!m_arrival.empty())
+        m_arrival[v] = no_arrival();
+    }
+    m_reached.clear();
+    m_reached_by_patch.clear();
+    m_keys = keys;
+    pseudo_sources.reset(!keys.is_exact());
+    if(origins && m_origin.empty())
+      m_origin.assign(distance.size(), no_origin());
+    if(arrivals && m_arrival.empty())
+      m_arrival.assign(distance.size(), no_arrival());
+    m_record_origins = origins;
+    m_record_arrivals = arrivals;
   }
+
+  // the vertices that have had a distance since reset(), patch by patch, once finish() has
+  // listed them at the end of the propagation
+  const std::vector<Index>& reached() const { return m_reached; }
+
+  // At the end of a propagation: lists the vertices reached, and puts those beyond `max_distance`
+  // at +infinity; returns how many are within it.
+  std::size_t finish(FT max_distance)
+  {
+    m_reached.clear();
+    for(std::size_t k = 0; k < m_reached_by_patch.shards(); ++k)
+      m_reached.insert(m_reached.end(), m_reached_by_patch.members(k).begin(), m_reached_by_patch.members(k).end());
+    std::size_t within = 0;
+    for(Index v : m_reached)
+    {
+      if(distance[v] > max_distance)
+        distance[v] = Number_type_math<FT>::infinity();
+      within += distance[v] < Number_type_math<FT>::infinity();
+    }
+    return within;
+  }
+  const std::vector<Index>& origins() const { return m_record_origins ? m_origin : m_none; }
+  const std::vector<Arrival>& arrivals() const { return m_record_arrivals ? m_arrival : m_no_arrivals; }
 
   // vertex `s` is the source numbered `k` in the query's order
   void set_source(Index s, Index k)
   {
+    m_reached_by_patch.insert(s, m_partition.owner(s));
     is_source[s] = 1;
     distance[s] = number<FT>(0);
-    if(!origin.empty())
-      origin[s] = (std::min)(origin[s], Index(distance.size()) + k);
+    if(m_record_origins)
+      m_origin[s] = (std::min)(m_origin[s], Index(distance.size()) + k);
   }
 
   // Lines 23-24: a path of length `d` reaches `v`, arriving from `direction` (pointing back along
@@ -95,13 +144,14 @@ public:
     const FT back = corner == Mesh::no_halfedge ? number<FT>(0) : direction_position(m_mesh, corner, direction);
     if(shorter)
     {
+      m_reached_by_patch.insert(v, m_partition.owner(v));
       distance[v] = d;
       pseudo_sources.distance_dropped(v);
       in.low = in.high = back;
-      if(!origin.empty())
-        origin[v] = from;
-      if(!arrival.empty())
-        arrival[v] = Arrival{corner, direction};
+      if(m_record_origins)
+        m_origin[v] = from;
+      if(m_record_arrivals)
+        m_arrival[v] = Arrival{corner, direction};
       return true;
     }
     if(d <= dv + T::rounding_margin(dv) && !(in.low <= back && back <= in.high))
@@ -111,10 +161,10 @@ public:
       if(d < dv)
       {
         distance[v] = d;
-        if(!origin.empty())
-          origin[v] = from;
-        if(!arrival.empty())
-          arrival[v] = Arrival{corner, direction};
+        if(m_record_origins)
+          m_origin[v] = from;
+        if(m_record_arrivals)
+          m_arrival[v] = Arrival{corner, direction};
       }
       return true; // emit the wider shadow if already popped
     }
@@ -134,17 +184,24 @@ public:
   }
 
 private:
+  static Arrival no_arrival() { return Arrival{Mesh::no_halfedge, Point{number<FT>(0), number<FT>(0)}}; }
+
   const Mesh& m_mesh;
-  const Key_ratio<FT> m_keys;
+  const Patch_partition<FT>& m_partition;
+  Key_ratio<FT> m_keys;
+  Index_set m_reached_by_patch; // the vertices given a distance, listed by the patch that owns them
+  std::vector<Index> m_reached; // see reached()
+  bool m_record_origins = false, m_record_arrivals = false;
+  std::vector<Index> m_origin;   // per vertex: see origins() (empty until a propagation records them)
+  std::vector<Arrival> m_arrival; // per vertex: see arrivals() (likewise)
+  const std::vector<Index> m_none;
+  const std::vector<Arrival> m_no_arrivals;
 
 public:
   std::vector<FT> distance;                       // best distance found so far (+inf: not reached)
   std::vector<Incoming_directions<FT>> incoming;  // arrival directions of its best paths
   std::vector<char> is_source;                    // one of the sources (they emit all around)
   Pseudo_source_states<FT> pseudo_sources;        // DGG-VTP's vertices that emit all around
-  std::vector<Index> origin;   // the pseudo-source of its path: a vertex, or the number of vertices +
-                               // the number of a source in the query's order (if the query asks)
-  std::vector<Arrival> arrival; // where its path arrives from (if the query asks)
 };
 
 } // namespace internal

@@ -75,6 +75,9 @@ public:
     , m_shadow_widening(small_turn(T::shadow_widening()))
   {}
 
+  // for the next propagation
+  void set_keys(const Key_ratio<FT>& keys) { m_keys = keys; }
+
   // lines 3-7: vertex `v` at distance `dv` lights all its corners
   template <class Out>
   void all_around(Index v, FT dv, Out& out) const
@@ -179,7 +182,7 @@ private:
   }
 
   const Mesh& m_mesh;
-  const Key_ratio<FT> m_keys;    // the key ratio of the windows
+  Key_ratio<FT> m_keys;          // the key ratio of the windows
   const Point m_shadow_widening; // the turn added on both sides of a shadow, for rounding
 };
 

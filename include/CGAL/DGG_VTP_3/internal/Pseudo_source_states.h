@@ -14,6 +14,8 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Index_set.h>
+#include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 
 #include <vector>
@@ -40,25 +42,35 @@ class Pseudo_source_states
   using Index = typename Mesh::Index;
 
 public:
-  // in the exact mode (`dgg` false) no vertex is one: the exact algorithm has its own rules
-  Pseudo_source_states(const Mesh& mesh, bool dgg)
-    : m_state(mesh.number_of_vertices(), not_emitting)
+  // Every vertex starts in the state the mesh gives it (in DGG-VTP, its exact pseudo-sources emit;
+  // in the exact mode (`dgg` false) no vertex is one: the exact algorithm has its own rules). That
+  // state is read from the mesh, not written per vertex, so that a propagation starts (reset())
+  // in the time of the vertices the previous one changed, not of the mesh.
+  // `partition`: the patches that change the vertices' states, each its own vertices
+  Pseudo_source_states(const Mesh& mesh, const Patch_partition<FT>& partition)
+    : m_mesh(mesh), m_partition(partition), m_state(mesh.number_of_vertices(), as_meshed)
+    , m_changed(mesh.number_of_vertices(), partition.size())
+  {}
+
+  // back to the mesh's states, for a propagation of mode `dgg`
+  void reset(bool dgg)
   {
-    if(dgg)
-      for(Index v = 0; v < Index(m_state.size()); ++v)
-        if(mesh.is_exact_pseudo_source(v))
-          m_state[v] = to_emit;
+    for(std::size_t k = 0; k < m_changed.shards(); ++k)
+      for(Index v : m_changed.members(k))
+        m_state[v] = as_meshed;
+    m_changed.clear();
+    m_dgg = dgg;
   }
 
   // `v` emits all around, or will
-  bool emits(Index v) const { return m_state[v] != not_emitting; }
+  bool emits(Index v) const { return state(v) != not_emitting; }
 
   // `v` is popped: whether it emits now (and then it has)
   bool emit_at_pop(Index v)
   {
-    if(m_state[v] != to_emit)
+    if(state(v) != to_emit)
       return false;
-    m_state[v] = emitted;
+    set(v, emitted);
     return true;
   }
 
@@ -73,15 +85,34 @@ public:
   // (again) to emit
   bool make_emitter(Index v)
   {
-    if(m_state[v] != not_emitting)
+    if(state(v) != not_emitting)
       return false;
-    m_state[v] = to_emit;
+    set(v, to_emit);
     return true;
   }
 
 private:
-  enum State : char { not_emitting, to_emit, emitted };
+  enum State : char { as_meshed, not_emitting, to_emit, emitted };
+
+  State state(Index v) const
+  {
+    const State s = m_state[v];
+    if(s != as_meshed)
+      return s;
+    return m_dgg && m_mesh.is_exact_pseudo_source(v) ? to_emit : not_emitting;
+  }
+
+  void set(Index v, State s)
+  {
+    m_changed.insert(v, m_partition.owner(v));
+    m_state[v] = s;
+  }
+
+  const Mesh& m_mesh;
+  const Patch_partition<FT>& m_partition;
+  bool m_dgg = false;
   std::vector<State> m_state; // per vertex
+  Index_set m_changed;        // the vertices whose state may not be as_meshed
 };
 
 } // namespace internal

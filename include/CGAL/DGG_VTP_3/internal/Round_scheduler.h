@@ -38,6 +38,8 @@ namespace internal {
 // scheduler and waits in an outbox until the round ends, and the distances of other patches'
 // vertices it reads are those of the round's start. So each patch's round depends on the
 // round's start only. Outboxes are delivered, receiver by receiver, in the order of the senders.
+// A round visits only the patches the propagation has woken (its sources', and those that were
+// sent something): a query that reaches a few patches costs no time in the others.
 //
 // `Propagation` runs Algorithm 1 on one patch at a time; what the scheduler asks of it:
 //   FT nearest_queued(p)            drops superseded queue entries, the nearest left (+inf: none)
@@ -49,6 +51,7 @@ namespace internal {
 //   const std::vector<FT>& distances()
 //   bool query_is_answered(nearest) every distance the query needs is final, `nearest` being
 //                                   the nearest queued vertex of all patches
+//   FT pop_limit()                  no vertex beyond it matters to the query (+inf: every one)
 template <class FT>
 class Round_scheduler
 {
@@ -85,7 +88,31 @@ public:
     , m_recipients(partition.size())
     , m_senders(partition.size())
     , m_receiving(partition.size(), 0)
+    , m_awake(partition.size(), 0)
   {}
+
+  // for the next propagation: no patch awake, every distance committed +infinity but those of
+  // the vertices `reached`, which the last one set
+  void reset(const std::vector<Index>& reached)
+  {
+    for(Index v : reached)
+      m_committed[v] = Number_type_math<FT>::infinity();
+    for(Index p : m_woken)
+      m_awake[p] = 0;
+    m_woken.clear();
+  }
+
+  // patch `p` has work (a source, a window put there from outside the rounds)
+  void wake(Index p)
+  {
+    if(m_awake[p])
+      return;
+    m_awake[p] = 1;
+    m_woken.insert(std::lower_bound(m_woken.begin(), m_woken.end(), p), p);
+  }
+
+  // the patches woken since reset(), in increasing order: the others have done nothing
+  const std::vector<Index>& woken() const { return m_woken; }
 
   // ---- what a patch sees of the others during a round ----------------------------------------
 
@@ -123,7 +150,7 @@ public:
     {
       FT nearest = Number_type_math<FT>::infinity();
       active.clear();
-      for(Index p = 0; p < m_partition.size(); ++p)
+      for(Index p : m_woken)
       {
         const FT queued = propagation.nearest_queued(p);
         nearest = (std::min)(nearest, queued);
@@ -133,11 +160,13 @@ public:
       // early termination ends the rounds of the full propagation, it does not change them
       if(propagation.query_is_answered(nearest) || (active.empty() && !propagation.schedule_stranded_lists(active)))
         break;
-      const FT limit = nearest + m_partition.band();
+      // the band, or less where the query needs no more (but at least the nearest vertex: see
+      // pop_limit())
+      const FT limit = (std::min)(nearest + m_partition.band(), (std::max)(propagation.pop_limit(), nearest));
       CGAL::for_each<ConcurrencyTag>(active, [&](Index p) { propagation.run_round(p, limit); return true; });
       // an upper bound of the windows alive at once during the round
       std::size_t peak = 0;
-      for(Index p = 0; p < m_partition.size(); ++p)
+      for(Index p : m_woken)
         peak += propagation.take_peak(p);
       windows_peak = (std::max)(windows_peak, peak);
       deliver<ConcurrencyTag>(propagation, active);
@@ -181,10 +210,11 @@ private:
     };
     for(Index p : active)
       receive(p);
-    for(Index p = 0; p < m_partition.size(); ++p)
+    for(Index p : std::vector<Index>(m_woken)) // only a woken patch has sent anything
     {
       for(Index q : m_recipients[p])
       {
+        wake(q);
         receive(q);
         m_senders[q].push_back(p);
       }
@@ -220,6 +250,8 @@ private:
   std::vector<std::vector<Index>> m_recipients; // per sender: the patches whose outbox is not empty
   std::vector<std::vector<Index>> m_senders;   // per receiver: the patches whose outbox to it is not empty
   std::vector<char> m_receiving;               // per patch: in this round's delivery
+  std::vector<char> m_awake;                   // per patch: in m_woken
+  std::vector<Index> m_woken;                  // see woken()
 };
 
 } // namespace internal

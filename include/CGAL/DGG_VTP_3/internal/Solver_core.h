@@ -18,6 +18,7 @@
 #include <CGAL/DGG_VTP_3/parameters.h>
 #include <CGAL/DGG_VTP_3/internal/Effective_concurrency_tag.h>
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
+#include <CGAL/DGG_VTP_3/internal/Propagation_pool.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
 #include <CGAL/DGG_VTP_3/internal/Query_builder.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
@@ -38,6 +39,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <memory>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -106,8 +108,9 @@ public:
                                                      const NamedParameters& np) const
   {
     const Set_up s = set_up(sources, np);
-    Propagation propagation(m_mesh, m_partition, s.accuracy);
-    propagation.template run<Effective_tag<ConcurrencyTag>>(s.query);
+    const auto lease = propagation();
+    Propagation& propagation = *lease;
+    propagation.template run<Effective_tag<ConcurrencyTag>>(s.query, s.accuracy);
     const std::vector<Computation_FT>& d = propagation.distances();
     for(std::size_t i = 0; i < d.size(); ++i)
       put(distances, m_numbering.vertex(i), FT(d[i]));
@@ -133,8 +136,10 @@ public:
   }
 
   // One propagation per set of source vertices, each on one thread; `row(k, distances,
-  // statistics)` is called as the k-th is done, `distances` indexed by the vertices' numbers.
-  // Everything is checked before the first propagation.
+  // statistics)` is called as the k-th is done, `distances` indexed by the vertices' numbers, or
+  // `row(k, distances, statistics, reached)` if it takes the numbers of the vertices the
+  // propagation reached (every other is at +infinity): a row within a maximum distance then costs
+  // what it reaches. Everything is checked before the first propagation.
   template <class ConcurrencyTag, class SourceSetRange, class RowFunction, class NamedParameters>
   void distances_from_each_source_set(const SourceSetRange& source_sets, const RowFunction& row,
                                       const NamedParameters& np) const
@@ -169,15 +174,20 @@ public:
       Query query = options;
       query.vertex_sources.assign(vertices.begin() + begin[k], vertices.begin() + begin[k + 1]);
       query.source_numbers.assign(query.vertex_sources.size(), 0); // the set is one source
-      Propagation propagation(m_mesh, m_partition, accuracy);
-      propagation.template run<Sequential_tag>(query);
+      const auto lease = propagation();
+      lease->template run<Sequential_tag>(query, accuracy);
+      const std::vector<Computation_FT>& d = lease->distances();
+      const auto give = [&](const std::vector<FT>& distances) {
+        if constexpr(std::is_invocable<const RowFunction&, std::size_t, const std::vector<FT>&,
+                                       const Propagation_statistics&, const std::vector<Index>&>::value)
+          row(k, distances, lease->statistics(), lease->reached());
+        else
+          row(k, distances, lease->statistics());
+      };
       if constexpr(std::is_same<FT, Computation_FT>::value)
-        row(k, propagation.distances(), propagation.statistics());
+        give(d);
       else
-      {
-        const std::vector<Computation_FT>& d = propagation.distances();
-        row(k, std::vector<FT>(d.begin(), d.end()), propagation.statistics());
-      }
+        give(std::vector<FT>(d.begin(), d.end()));
       return true;
     });
   }
@@ -212,12 +222,18 @@ public:
   {
     Set_up s = set_up(sources, np);
     s.query.record_origins = s.query.record_arrivals = true;
-    Propagation propagation(m_mesh, m_partition, s.accuracy);
-    propagation.template run<Effective_tag<ConcurrencyTag>>(s.query);
-    return make_tree(propagation, s.query, s.targets);
+    const auto lease = propagation();
+    lease->template run<Effective_tag<ConcurrencyTag>>(s.query, s.accuracy);
+    return make_tree(*lease, s.query, s.targets);
   }
 
 private:
+  // a propagation of this mesh for one query, kept for the next one (see Propagation_pool)
+  typename Propagation_pool<Propagation>::Lease propagation() const
+  {
+    return m_pool.take([this] { return std::make_unique<Propagation>(m_mesh, m_partition); });
+  }
+
   template <class ConcurrencyTag>
   using Effective_tag = typename Effective_concurrency_tag<ConcurrencyTag, Computation_FT>::type;
 
@@ -285,6 +301,7 @@ private:
   Patch_partition<Computation_FT> m_partition; // the faces cut into patches for the propagation's rounds
   std::vector<Index> m_internal_face;     // face number -> face of m_mesh
   std::vector<Index> m_user_face;         // face of m_mesh -> face number
+  mutable Propagation_pool<Propagation> m_pool; // the propagations of the queries, between them
 };
 
 } // namespace internal

@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Index_set.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
 
 #include <cstdint>
@@ -28,7 +29,9 @@ namespace internal {
 // threaded through one pool of windows with a free list: no allocation per window, and memory
 // proportional to the live wavefront, not to the number of windows ever created. The pool grows
 // by blocks that never move: a vector would double its capacity and copy itself, holding up to
-// three times the live windows at that moment.
+// three times the live windows at that moment. The lists a propagation used are remembered, so
+// that the next propagation on the same mesh starts from clean lists at a cost in proportion to
+// what this one touched, not to the mesh (see clear()).
 template <class FT>
 class Window_lists
 {
@@ -37,7 +40,7 @@ public:
   static constexpr Index nil = Index(-1);
 
   explicit Window_lists(std::size_t number_of_halfedges)
-    : m_head(number_of_halfedges, nil)
+    : m_head(number_of_halfedges, nil), m_used(number_of_halfedges)
   {}
 
   bool empty(Index h) const { return m_head[h] == nil; }
@@ -62,6 +65,7 @@ public:
       }
     }
     window(i) = w;
+    m_used.insert(h);
     next(i) = m_head[h];
     m_head[h] = i;
     ++m_created;
@@ -90,11 +94,28 @@ public:
   template <class Predicate>
   bool all_windows(const Predicate& predicate) const
   {
-    for(Index head : m_head)
-      for(Index i = head; i != nil; i = next(i))
+    for(Index h : m_used.members())
+      for(Index i = m_head[h]; i != nil; i = next(i))
         if(!predicate(window(i)))
           return false;
     return true;
+  }
+
+  // the lists that held a window since clear(), empty or not, in the order they were first used
+  const std::vector<Index>& used() const { return m_used.members(); }
+
+  // every list empty and every count 0, as when constructed, in the time of the lists used since
+  // the last clear() (an early-terminated propagation leaves windows behind)
+  void clear()
+  {
+    for(Index h : m_used.members())
+      m_head[h] = nil;
+    m_used.clear();
+    m_free = nil;
+    m_size = 0;
+    m_live = m_peak = m_created = 0;
+    m_window_blocks.clear();
+    m_next_blocks.clear();
   }
 
   std::size_t created() const { return m_created; }
@@ -124,6 +145,7 @@ private:
   Index next(Index i) const { return m_next_blocks[i >> block_bits][i & block_mask]; }
 
   std::vector<Index> m_head;      // per halfedge: first window of its list, or nil
+  Index_set m_used;               // the halfedges whose list held a window since clear()
   std::vector<std::unique_ptr<Window<FT>[]>> m_window_blocks; // the pool: windows, live or free
   std::vector<std::unique_ptr<Index[]>> m_next_blocks; // per slot: next window of its list, or next free slot
   Index m_size = 0;               // slots ever used

@@ -17,8 +17,11 @@
 #include <CGAL/DGG_VTP_3/Propagation_cancelled.h>
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
 #include <CGAL/DGG_VTP_3/internal/Distance_bound.h>
+#include <CGAL/DGG_VTP_3/internal/Index_set.h>
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Point_targets.h>
+#include <CGAL/DGG_VTP_3/internal/Progress_report.h>
+#include <CGAL/DGG_VTP_3/internal/Propagation_patch.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_vertices.h>
 #include <CGAL/DGG_VTP_3/internal/Pseudo_source_emission.h>
@@ -35,13 +38,8 @@
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
 
-#include <boost/heap/d_ary_heap.hpp>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <deque>
-#include <functional>
 #include <utility>
 #include <vector>
 
@@ -49,8 +47,9 @@ namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
 
-// One propagation from a set of sources (paper, Algorithm 1) over an Unfolded_mesh: the
-// per-query scratch of the const queries of Geodesic_distance_solver.
+// One propagation from a set of sources (paper, Algorithm 1) over an Unfolded_mesh: the scratch of
+// the solvers' const queries, kept between queries (Propagation_pool). run() first undoes what the
+// last run touched (vertices, faces, lists, patches): a query costs what it reaches, not the mesh.
 //
 // Windows sit in per-halfedge window lists; a vertex-oriented priority queue pops the nearest
 // vertex, which may emit windows as a pseudo-source (see Pseudo_source_emission) and brings its
@@ -75,15 +74,14 @@ class Window_propagation
   friend Scheduler;
 
 public:
-  // `accuracy` is the user's epsilon: 0 for the exact algorithm
-  Window_propagation(const Mesh& mesh, const Patch_partition<FT>& partition, FT accuracy)
+  Window_propagation(const Mesh& mesh, const Patch_partition<FT>& partition)
     : m_mesh(mesh)
     , m_partition(partition)
     , m_scheduler(partition, mesh.number_of_vertices())
-    , m_keys(accuracy, mesh.number_of_vertices())
+    , m_keys(number<FT>(0), mesh.number_of_vertices())
     , m_emission(mesh, m_keys)
-    , m_vertices(mesh, m_keys)
-    , m_in_region(mesh.number_of_faces(), 0)
+    , m_vertices(mesh, partition)
+    , m_in_region(mesh.number_of_faces(), partition.size())
     , m_scheduled(mesh.number_of_halfedges(), 0)
     , m_window_limit(window_limit(mesh))
   {
@@ -95,77 +93,78 @@ public:
 
   // The distance to the nearest of the sources: they all start at 0, with their copies (relax()
   // relays every later distance to a vertex's copies), and emit all around (lines 1-8), as far as
-  // the query needs.
+  // the query needs. `accuracy` is the user's epsilon: 0 for the exact algorithm.
   template <class ConcurrencyTag>
-  void run(const Propagation_query<FT>& query)
+  void run(const Propagation_query<FT>& query, FT accuracy)
   {
+    reset(query, accuracy);
     m_query = &query;
     const Index nv = Index(m_vertices.distance.size());
-    m_vertices.record(query.record_origins, query.record_arrivals);
     for(std::size_t k = 0; k < query.vertex_sources.size(); ++k)
     {
       const Index s = query.vertex_sources[k];
       m_vertices.set_source(s, query.source_numbers[k]);
       m_scheduler.commit(s, number<FT>(0));
+      m_scheduler.wake(m_partition.owner(s));
       m_patches[m_partition.owner(s)].queue.push(Queue_entry(number<FT>(0), s));
       Emission_out out{*this, m_patches[m_partition.owner(s)]};
       m_emission.to_copies(s, number<FT>(0), out);
     }
     m_targets = Point_targets<FT>(m_mesh, query.point_targets);
-    const auto out_in_face = [this](Index f) { return Emission_out{*this, m_patches[m_partition.patch_of_face(f)]}; };
+    const auto out_in_face = [this](Index f) {
+      m_scheduler.wake(m_partition.patch_of_face(f));
+      return Emission_out{*this, m_patches[m_partition.patch_of_face(f)]};
+    };
     for(std::size_t k = 0; k < query.point_sources.size(); ++k)
       m_emission.from_surface_point(query.point_sources[k], nv + query.source_numbers[query.vertex_sources.size() + k],
                                     out_in_face);
     m_scheduler.template deliver_now<ConcurrencyTag>(*this);
     m_scheduler.template run<ConcurrencyTag>(*this, m_stats.windows_peak);
-    for(Patch& p : m_patches)
-    {
-      m_stats.windows_created += p.lists.created();
-      m_stats.pseudo_sources += p.stats.pseudo_sources;
-      m_stats.vertices_popped += p.stats.vertices_popped;
-    }
+    for(Index k : m_scheduler.woken())
+      m_patches[k].add_statistics(m_stats);
     m_targets.finish(m_mesh, m_vertices.distance, query);
-    for(FT& d : m_vertices.distance)
-    {
-      if(d > query.max_distance)
-        d = infinity();
-      if(d < infinity())
-        ++m_stats.vertices_reached;
-    }
+    m_stats.vertices_reached = m_vertices.finish(query.max_distance);
+    m_reusable = true;
   }
+
+  // whether the last run() ended normally: one that threw (a cancelled query, a refused mesh) may
+  // have left messages between patches, and its propagation is not run again
+  bool reusable() const { return m_reusable; }
 
   // per vertex, when the query records them: the pseudo-source of its path (see
   // Propagation_vertices), and where its path arrives from
   using Arrival = typename Propagation_vertices<FT>::Arrival;
-  const std::vector<Index>& origins() const { return m_vertices.origin; }
-  const std::vector<Arrival>& arrivals() const { return m_vertices.arrival; }
+  const std::vector<Index>& origins() const { return m_vertices.origins(); }
+  const std::vector<Arrival>& arrivals() const { return m_vertices.arrivals(); }
   static Index no_origin() { return Propagation_vertices<FT>::no_origin(); }
   // the query's point targets: how their shortest paths arrive
   const Point_targets<FT>& point_targets() const { return m_targets; }
 
   const std::vector<FT>& distances() const { return m_vertices.distance; }
+  // the vertices that got a distance (+infinity beyond max_distance); the others are at +infinity
+  const std::vector<Index>& reached() const { return m_vertices.reached(); }
   const Propagation_statistics& statistics() const { return m_stats; }
 
 private:
-  using Queue_entry = std::pair<FT, Index>;
-  using Queue = boost::heap::d_ary_heap<Queue_entry, boost::heap::arity<4>,
-                                        boost::heap::compare<std::greater<Queue_entry>>>;
+  using Patch = Propagation_patch<FT>;
+  using Queue = typename Patch::Queue;
+  using Queue_entry = typename Patch::Queue_entry;
 
-  // one patch of faces: its halfedges' window lists, its vertices' queue, the scratch of propagating
-  struct Patch
+  // the state of a new propagation, in the time of what the last one touched
+  void reset(const Propagation_query<FT>& query, FT accuracy)
   {
-    Patch(Index id, Index first_face, Index end_face)
-      : id(id), first_halfedge(3 * first_face), lists(3 * std::size_t(end_face - first_face))
-    {}
-    Index id, first_halfedge;
-    Window_lists<FT> lists;          // per halfedge of the patch: windows entering its face
-    Queue queue;                     // vertex-oriented priority queue Q (lazy deletion)
-    std::deque<Index> fifo;          // FIFO F of window lists to propagate
-    std::vector<Win> buffer;         // the window list being propagated
-    std::vector<FT> starts;          // its windows' starts, sorted, before pairwise trimming
-    std::vector<Toward_apex<FT>> toward_apex; // per window of that list
-    Propagation_statistics stats;
-  };
+    m_reusable = false;
+    m_keys = Key_ratio<FT>(accuracy, m_mesh.number_of_vertices());
+    m_emission.set_keys(m_keys);
+    for(Index k : m_scheduler.woken())
+      m_patches[k].clear(m_scheduled);
+    m_scheduler.reset(m_vertices.reached());
+    m_vertices.reset(m_keys, query.record_origins, query.record_arrivals);
+    m_in_region.clear();
+    m_stats = Propagation_statistics();
+    m_progress.reset();
+    m_targets = Point_targets<FT>();
+  }
 
   // ---------------------------------------------------------------------------------------------
   // what the scheduler asks of a patch (see Round_scheduler)
@@ -185,7 +184,13 @@ private:
   bool query_is_answered(FT nearest) const
   {
     return nothing_pending_below(early_termination_limit(*m_query, m_targets, m_mesh, m_vertices.distance), nearest, m_keys,
-                                 m_patches);
+                                 m_patches, m_scheduler.woken());
+  }
+
+  // how far the rounds need to pop for what the query asks (see pop_limit())
+  FT pop_limit() const
+  {
+    return internal::pop_limit(early_termination_limit(*m_query, m_targets, m_mesh, m_vertices.distance), m_keys);
   }
 
   // lines 9-29 in one patch, for the vertices nearer than `limit`
@@ -219,22 +224,15 @@ private:
     return peak;
   }
 
-  // The query's progress callback after the first round, then at most every 0.1 s, with the
-  // fraction of the vertices popped (those whose distance is final, but for the rare vertex popped
-  // again); throws Propagation_cancelled when it returns false.
+  // after the first round, then at most every 0.1 s (see Progress_report)
   void report_progress()
   {
-    if(!m_query->progress)
-      return;
-    const auto now = std::chrono::steady_clock::now();
-    if(now < m_next_report)
-      return;
-    m_next_report = now + std::chrono::milliseconds(100);
-    std::size_t popped = 0;
-    for(const Patch& p : m_patches)
-      popped += p.stats.vertices_popped;
-    if(!m_query->progress((std::min)(1., double(popped) / double((std::max)(std::size_t(1), m_vertices.distance.size())))))
-      throw Propagation_cancelled();
+    m_progress(m_query->progress, [this] {
+      std::size_t popped = 0;
+      for(Index k : m_scheduler.woken())
+        popped += m_patches[k].stats.vertices_popped;
+      return popped;
+    }, m_vertices.distance.size());
   }
 
   void receive(Index k, const typename Scheduler::Window_message& m) { add_window(m_patches[k], m.halfedge, m.window); }
@@ -249,14 +247,14 @@ private:
   // on well-formed input); rather than lose its windows, its face enters R when nothing else is left.
   bool schedule_stranded_lists(std::vector<Index>& active)
   {
-    for(Patch& p : m_patches)
+    for(Index k : m_scheduler.woken())
     {
-      for(Index h = p.first_halfedge; h < p.first_halfedge + p.lists.size(); ++h)
-        if(!p.lists.empty(h - p.first_halfedge) && !m_scheduled[h])
-        {
-          m_in_region[Mesh::face(h)] = 1;
-          schedule(p, h);
-        }
+      Patch& p = m_patches[k];
+      for(Index h : p.unscheduled_lists(m_scheduled))
+      {
+        m_in_region.insert(Mesh::face(h), p.id);
+        schedule(p, h);
+      }
       if(!p.fifo.empty())
         active.push_back(p.id);
     }
@@ -317,9 +315,8 @@ private:
 
   void enter_face(Patch& p, Index f)
   {
-    if(m_in_region[f])
+    if(!m_in_region.insert(f, p.id))
       return;
-    m_in_region[f] = 1;
     for(Index h = 3 * f; h < 3 * f + 3; ++h)
       schedule(p, h);
   }
@@ -341,7 +338,7 @@ private:
     if(m_scheduler.template hand_off<typename Scheduler::Window_message>(p.id, m_partition.patch_of_halfedge(h), h, w))
       return;
     p.lists.push(h - p.first_halfedge, w);
-    if(m_in_region[Mesh::face(h)])
+    if(m_in_region.contains(Mesh::face(h)))
       schedule(p, h);
   }
 
@@ -480,17 +477,18 @@ private:
   const Mesh& m_mesh;
   const Patch_partition<FT>& m_partition;
   Scheduler m_scheduler;
-  const Key_ratio<FT> m_keys;         // rho = 1 + epsilon (1: exact) and its constants
-  const Pseudo_source_emission<FT> m_emission; // what pseudo-sources send out, and where
+  Key_ratio<FT> m_keys;               // rho = 1 + epsilon (1: exact) and its constants
+  Pseudo_source_emission<FT> m_emission; // what pseudo-sources send out, and where
   Propagation_vertices<FT> m_vertices; // per vertex: distance, arrivals, (pseudo-)source
-  std::vector<char> m_in_region;      // per face: inside the propagation region R
+  Index_set m_in_region;              // the faces inside the propagation region R
   std::vector<char> m_scheduled;      // per halfedge: its window list is in its patch's FIFO
   const std::size_t m_window_limit;   // see window_limit()
   std::deque<Patch> m_patches;        // a deque: a patch never moves
   const Propagation_query<FT>* m_query = nullptr;
-  std::chrono::steady_clock::time_point m_next_report; // of the progress callback (the first: at once)
+  Progress_report m_progress;         // of the query's progress callback
   Point_targets<FT> m_targets;        // the query's targets inside faces
   Propagation_statistics m_stats;
+  bool m_reusable = true;             // see reusable()
 };
 
 } // namespace internal
