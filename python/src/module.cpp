@@ -386,7 +386,7 @@ PYBIND11_MODULE(_dggvtp, m)
           py::gil_scoped_release unlocked;
           rows = dggvtp::transposed(rows, s.vertices());
 #ifdef __GLIBC__
-          malloc_trim(0); // the rows' memory, emptied while transposing
+          malloc_trim(0); // the rows' memory, freed by the assignment
 #endif
         }
         const std::size_t columns = by_column && !symmetric ? sources_count : s.vertices();

@@ -69,9 +69,8 @@ void sparse_row(const Loaded_soup& soup, const std::vector<FT>& d, const std::ve
 }
 
 // The transpose of the matrix of `rows` (rows.size() x `columns`), as rows: row j holds the
-// entries of column j, in increasing row. The rows are emptied as they are read, their memory
-// handed back.
-inline std::vector<Sparse_row> transposed(std::vector<Sparse_row>& rows, std::size_t columns)
+// entries of column j, in increasing row.
+inline std::vector<Sparse_row> transposed(const std::vector<Sparse_row>& rows, std::size_t columns)
 {
   std::vector<std::size_t> count(columns, 0);
   for(const Sparse_row& r : rows)
@@ -84,24 +83,20 @@ inline std::vector<Sparse_row> transposed(std::vector<Sparse_row>& rows, std::si
     t[j].values.reserve(count[j]);
   }
   for(std::size_t k = 0; k < rows.size(); ++k)
-  {
     for(std::size_t e = 0; e < rows[k].columns.size(); ++e)
     {
       t[rows[k].columns[e]].columns.push_back(std::uint32_t(k));
       t[rows[k].columns[e]].values.push_back(rows[k].values[e]);
     }
-    rows[k] = Sparse_row();
-  }
   return t;
 }
 
 // The square matrix of `rows` made symmetric: each entry the smaller of (i, j) and (j, i), an
 // entry present in one direction only (the other beyond the radius) taking that one's distance.
-// Holds the transpose while merging: about three copies of the matrix at the peak.
+// Holds the transpose while merging: up to three copies of the matrix at the peak.
 inline void make_symmetric(std::vector<Sparse_row>& rows)
 {
-  std::vector<Sparse_row> copy = rows; // the transpose consumes its input
-  std::vector<Sparse_row> t = transposed(copy, rows.size());
+  std::vector<Sparse_row> t = transposed(rows, rows.size());
   for(std::size_t i = 0; i < rows.size(); ++i)
   {
     const Sparse_row& a = rows[i];
