@@ -210,16 +210,17 @@ private:
     };
     for(Index p : active)
       receive(p);
-    for(Index p : std::vector<Index>(m_woken)) // only a woken patch has sent anything
+    for(Index p : m_woken) // only a woken patch has sent anything
     {
       for(Index q : m_recipients[p])
       {
-        wake(q);
         receive(q);
         m_senders[q].push_back(p);
       }
       m_recipients[p].clear();
     }
+    for(Index q : receivers)
+      wake(q);
     const std::vector<FT>& distance = propagation.distances();
     CGAL::for_each<ConcurrencyTag>(receivers, [&](Index q) {
       for(Index sender : m_senders[q])
