@@ -187,20 +187,41 @@ bool same_point(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index
   return a == b;
 }
 
+// The clearance of the point of copy `v`: the least distance from it to the far edge of a face
+// at one of its copies (the least height there), below which no other vertex is seen from it.
+template <class FT>
+FT copy_clearance(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index v)
+{
+  FT least = mesh.length(*mesh.corners_begin(v));
+  auto u = v;
+  do
+  {
+    for(auto c = mesh.corners_begin(u); c != mesh.corners_end(u); ++c)
+      least = (std::min)(least, mesh.apex(Unfolded_mesh<FT>::next(*c)).y);
+    u = mesh.next_copy(u);
+  } while(u != v);
+  return least;
+}
+
 // Calls `add(g, w)` for each halfedge g whose face a window leaving the face of `x` across its
 // edge enters: opposite(x), if any, then the twins of `x` (the same edge in other sheets). `w`
 // is in the frame of opposite(x), the edge the other way; a twin along the same way as `x` gets
 // it mirrored (its sides swapped, with their relays).
-// A window through one end of the edge, within a sliver of it (Tuning::sheet_crossing_sliver()),
-// enters no other sheet where that end, a copy, has a key no larger than the window's there, to
-// the rounding of a window unfolded around it (Tuning::sheet_crossing_tie(); `covered(v, key)`:
-// whether v's key is at most `key`): a copy emits all around, into every sheet, and its straight
-// paths reach what the window's rays would at a length longer by at most the sliver's square
-// over the distance. Carried on, such windows circle the copy from sheet to sheet, tied with its
-// key so that no rule prunes them, and multiply at every crossing (fuzz inputs: 11 triangles on
-// 5 points with edges of 3 to 6 sheets, 215,967 windows from one vertex, then 357; two needles
-// meeting at a copy, whose windows' keys drifted below the copy's by 1.4 rounding margins, for
-// ever, then 2,234).
+// A window through one end of the edge, a copy, enters no other sheet where the copy has a key
+// no larger than the window's there, to the rounding of a window unfolded around it
+// (Tuning::sheet_crossing_tie(); `covered(v, key)`: whether v's key is at most `key`): a copy
+// emits all around, into every sheet. "Through" means within a sliver of the copy, sqrt(machine
+// epsilon) (Tuning::sheet_crossing_sliver()) times the least of the edge's length, the straight
+// length a from the window's source image to the copy and the copy's clearance c (above): a
+// path from the copy to a point at b >= c from it (every vertex but the copy) is longer than the
+// window's ray through the sliver by at most about sliver^2 (1/a + 1/b) / 2, which is below
+// machine epsilon times the ray's length a + b, at any distance from a source (case
+// copies_near_source: a source 3e-8 from a copy on an edge of length 1, where a sliver
+// relative to the edge alone cost 4.8% in the exact mode). Carried on, such windows circle the
+// copy from sheet to sheet, tied with its key so that no rule prunes them, and multiply at
+// every crossing (fuzz inputs: 11 triangles on 5 points with edges of 3 to 6 sheets, 215,967
+// windows from one vertex, then 357; two needles meeting at a copy, whose windows' keys drifted
+// below the copy's by 1.4 rounding margins, for ever, then 2,234).
 template <class FT, class Add, class Covered>
 void for_each_face_across(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index x, const Window<FT>& w,
                           Add&& add, Covered&& covered)
@@ -210,12 +231,17 @@ void for_each_face_across(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<
     add(o, w);
   if(mesh.next_twin(x) == x)
     return;
-  const FT len = mesh.length(x), sliver = Tuning<FT>::sheet_crossing_sliver() * len;
+  const FT len = mesh.length(x), widest = Tuning<FT>::sheet_crossing_sliver() * len;
   // in the frame of opposite(x): the target of x at 0, its source at len
-  const auto tied = [&](FT key) { return key + Tuning<FT>::sheet_crossing_tie(key + len); };
-  if(w.b1 - w.b0 <= sliver &&
-     ((w.b0 <= sliver && covered(mesh.target(x), tied(w.distance_to_base_point(number<FT>(0))))) ||
-      (w.b1 >= len - sliver && covered(mesh.source(x), tied(w.distance_to_base_point(len))))))
+  const auto through = [&](typename Unfolded_mesh<FT>::Index v, FT at) {
+    const FT a = length(Vec2<FT>{at - w.source.x, -w.source.y});
+    const FT sliver = Tuning<FT>::sheet_crossing_sliver() * (std::min)((std::min)(len, a), copy_clearance(mesh, v));
+    const FT key = w.sigma + a;
+    return w.b1 - w.b0 <= sliver && (at == 0 ? w.b0 <= sliver : w.b1 >= len - sliver) &&
+           covered(v, key + Tuning<FT>::sheet_crossing_tie(key + len));
+  };
+  if(w.b1 - w.b0 <= widest && ((w.b0 <= widest && through(mesh.target(x), number<FT>(0))) ||
+                               (w.b1 >= len - widest && through(mesh.source(x), len))))
     return;
   for(auto g = mesh.next_twin(x); g != x; g = mesh.next_twin(g))
   {
