@@ -52,6 +52,7 @@ struct Query
   double epsilon = 0.;             // accuracy; 0 = exact
   double max_distance = std::numeric_limits<double>::infinity();
   long threads = 1;                // 0 = all cores; 1 = sequential
+  std::function<bool()> interrupted; // asked between rounds and rows: true cancels (Propagation_cancelled)
 };
 
 using Paths = std::vector<std::pair<Polyline, double>>; // from each target to its source, and its length
@@ -66,6 +67,9 @@ public:
   virtual std::size_t number_of_faces() const = 0;    // of F
   virtual std::size_t number_of_triangles() const = 0; // of the solver (after the input policy's repairs)
   virtual const std::vector<std::string>& repairs() const = 0;
+  // V (3D) and F as the caller gave them, to build the same solver again (pickle)
+  virtual std::pair<std::vector<std::array<double, 3>>, std::vector<std::array<std::uint32_t, 3>>>
+  given_mesh() const = 0;
   // per vertex, into `distances` (and `labels` unless null)
   virtual void distances(const Query& query, double* distances, long long* labels,
                          std::vector<Moved_point>& moved) const = 0;
@@ -75,7 +79,9 @@ public:
   // distance; each row is handed to `row(k, row)` from any thread
   virtual void local_distance_matrix(const Query& query,
                                      const std::function<void(std::size_t, Sparse_row&&)>& row) const = 0;
-  virtual std::vector<double> target_distances(const Query& query, std::vector<Moved_point>& moved) const = 0;
+  // and, unless null, the number of each target's nearest source (-1: unreachable) into `labels`
+  virtual std::vector<double> target_distances(const Query& query, std::vector<Moved_point>& moved,
+                                               std::vector<long long>* labels) const = 0;
   virtual Paths shortest_paths(const Query& query, std::vector<Moved_point>& moved) const = 0;
 };
 
@@ -95,7 +101,10 @@ public:
     : m_soup(std::move(soup)), m_faces(std::move(faces))
   {
     if(repair.on)
+    {
+      m_given_points = file_points(); // the repairs may move them
       m_record = repair_soup(m_soup, repair);
+    }
     try
     {
       with_threads(threads, [&](auto tag) { make_solver<decltype(tag)>(m_soup, m_solver); });
@@ -113,6 +122,10 @@ public:
   std::size_t number_of_faces() const override { return m_faces.size(); }
   std::size_t number_of_triangles() const override { return m_soup.triangles.size(); }
   const std::vector<std::string>& repairs() const override { return m_soup.repairs; }
+  std::pair<std::vector<std::array<double, 3>>, std::vector<Face>> given_mesh() const override
+  {
+    return {m_given_points.empty() ? file_points() : m_given_points, m_faces};
+  }
 
   void distances(const Query& query, double* distances, long long* labels,
                  std::vector<Moved_point>& moved) const override
@@ -122,7 +135,7 @@ public:
       std::vector<std::size_t> nearest(labels ? m_solver->number_of_vertices() : 0);
       with_threads(query.threads, [&](auto tag) {
         using Tag = decltype(tag);
-        const auto np = named_parameters(query);
+        const auto np = one_query_parameters(query);
         if(labels)
           m_solver->template compute_distances_to_nearest_source<Tag>(
             q.sources, field.map(), CGAL::DGG_VTP_3::parameters::nearest_source_map(CGAL::make_property_map(nearest), np));
@@ -141,6 +154,7 @@ public:
     const std::size_t n = number_of_vertices();
     with_threads(query.threads, [&](auto tag) {
       CGAL::for_each<decltype(tag)>(boost::irange(std::size_t(0), query.sources.size()), [&](std::size_t k) {
+        stop_if_interrupted(query);
         Query one = query;
         one.sources.assign(1, query.sources[k]);
         one.threads = 1;
@@ -172,6 +186,7 @@ public:
     }
     const auto done = [&](std::size_t k, const std::vector<FT>& d, const CGAL::DGG_VTP_3::Propagation_statistics&,
                           const auto& reached) {
+      stop_if_interrupted(query);
       Sparse_row r;
       sparse_row(m_soup, d, reached, &m_merged, r);
       row(computed[k], std::move(r));
@@ -182,21 +197,53 @@ public:
     });
   }
 
-  std::vector<double> target_distances(const Query& query, std::vector<Moved_point>& moved) const override
+  // with labels, from the shortest path tree, which knows each target's nearest source
+  std::vector<double> target_distances(const Query& query, std::vector<Moved_point>& moved,
+                                       std::vector<long long>* labels) const override
   {
     std::vector<double> out;
     with_places(query, moved, [&](const auto& q) {
+      namespace DP = CGAL::DGG_VTP_3::parameters;
       std::vector<FT> d(m_solver->number_of_vertices());
       std::vector<FT> at_targets;
+      std::vector<std::size_t> nearest(labels ? d.size() : 0), target_nearest;
       with_threads(query.threads, [&](auto tag) {
-        namespace DP = CGAL::DGG_VTP_3::parameters;
-        m_solver->template compute_distances_to_nearest_source<decltype(tag)>(
-          q.sources, CGAL::make_property_map(d),
-          DP::target_distances(std::back_inserter(at_targets), DP::targets(q.targets, named_parameters(query))));
+        const auto np = DP::targets(q.targets, one_query_parameters(query));
+        if(!labels)
+        {
+          m_solver->template compute_distances_to_nearest_source<decltype(tag)>(
+            q.sources, CGAL::make_property_map(d), DP::target_distances(std::back_inserter(at_targets), np));
+          return;
+        }
+        const auto tree = m_solver->template compute_shortest_path_tree<decltype(tag)>(q.sources, np);
+        for(std::size_t v = 0; v < d.size(); ++v) // beyond max_distance unreached, as in the field
+          if(tree.distance(v) <= FT(query.max_distance))
+          {
+            d[v] = tree.distance(v);
+            nearest[v] = tree.nearest_source(v);
+          }
+          else
+          {
+            d[v] = std::numeric_limits<FT>::infinity();
+            nearest[v] = std::size_t(-1);
+          }
+        for(std::size_t k = 0; k < q.targets.size(); ++k)
+        {
+          at_targets.push_back(tree.target_distance(k));
+          target_nearest.push_back(tree.target_nearest_source(k));
+        }
       });
-      finish_sources(q, std::vector<std::size_t>(), d.data());
+      const std::vector<long long> label = finish_sources(q, nearest, d.data());
       for(const auto& t : q.target_places)
-        out.push_back(double(t.vertices.empty() ? at_targets[t.point] : d[nearest_copy(t.vertices, d)]));
+      {
+        const std::size_t v = t.vertices.empty() ? 0 : nearest_copy(t.vertices, d);
+        out.push_back(double(t.vertices.empty() ? at_targets[t.point] : d[v]));
+        if(labels)
+          labels->push_back(!t.vertices.empty() ? label[v]
+                            : target_nearest[t.point] == std::size_t(-1)
+                              ? -1
+                              : static_cast<long long>(q.source_option[target_nearest[t.point]]));
+      }
     });
     return out;
   }
@@ -210,7 +257,7 @@ public:
       std::optional<Tree> tree;
       with_threads(query.threads, [&](auto tag) {
         tree.emplace(m_solver->template compute_shortest_path_tree<decltype(tag)>(
-          q.sources, CGAL::DGG_VTP_3::parameters::targets(q.targets, named_parameters(query))));
+          q.sources, CGAL::DGG_VTP_3::parameters::targets(q.targets, one_query_parameters(query))));
       });
       std::vector<FT> d(m_solver->number_of_vertices());
       for(std::size_t v = 0; v < d.size(); ++v)
@@ -267,6 +314,18 @@ private:
   static auto named_parameters(const Query& query)
   {
     return CGAL::DGG_VTP_3::parameters::max_distance(query.max_distance).accuracy(query.epsilon);
+  }
+  // ... of a query of one propagation, which asks query.interrupted between its rounds
+  static auto one_query_parameters(const Query& query)
+  {
+    return named_parameters(query).callback(
+      std::function<bool(double)>([&query](double) { return !(query.interrupted && query.interrupted()); }));
+  }
+  // between the rows of many propagations
+  static void stop_if_interrupted(const Query& query)
+  {
+    if(query.interrupted && query.interrupted())
+      throw CGAL::DGG_VTP_3::Propagation_cancelled();
   }
 
   // Where F's faces are among the solver's triangles: face f is triangle f while the input policy
@@ -358,6 +417,14 @@ private:
     f(q);
   }
 
+  std::vector<std::array<double, 3>> file_points() const
+  {
+    std::vector<std::array<double, 3>> out(m_soup.file_vertices);
+    for(std::size_t i = 0; i < out.size(); ++i)
+      out[i] = {m_soup.points[i].x(), m_soup.points[i].y(), m_soup.points[i].z()};
+    return out;
+  }
+
   static constexpr std::size_t no_triangle = std::size_t(-1);
 
   Loaded_soup m_soup;         // kept: the copies' file vertices, the triangles to locate points on
@@ -365,6 +432,7 @@ private:
   bool m_faces_are_triangles = true;          // face f of F is triangle f of the soup
   std::vector<std::size_t> m_triangle_of_face; // or else this (no_triangle: none)
   Repair_record m_record;     // what repair=True did to V's vertices
+  std::vector<std::array<double, 3>> m_given_points; // V before repair=True (else the soup's points)
   std::map<std::size_t, std::vector<std::size_t>> m_merged; // m_record's merged vertices, by stand-in
   std::optional<Solver> m_solver;
   bool m_same_vertices = true;

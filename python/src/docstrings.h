@@ -26,7 +26,9 @@ arrays out; unreachable vertices get inf.
 Bad input raises ValueError (dggvtp.InputError, a subclass, for the input policy of the mesh
 loader); what the dggvtp program reports as a warning (repairs, unreachable vertices, points far
 from the surface) is a RuntimeWarning. Every computation releases the GIL: several Python threads
-may query one solver at once.
+may query one solver at once. Ctrl-C (SIGINT) stops a call within a fraction of a second with
+KeyboardInterrupt, the solver ready for the next call. A solver pickles (for multiprocessing)
+and copies: it is rebuilt from V, F and its options.
 )";
 
 const char* const input_error = R"(Input refused by the mesh loader's input policy (a ValueError).)";
@@ -53,7 +55,7 @@ not finite, a face with fewer than 3 vertices, an index out of range, or a polyg
 triangulated.
 )";
 
-const char* const solver = R"(GeodesicSolver(V, F, precision="double", *, repair=False)
+const char* const solver = R"(GeodesicSolver(V, F, precision="double", *, repair=False, threads=1)
 
 A triangle mesh prepared once for any number of geodesic distance queries.
 
@@ -67,9 +69,9 @@ repair: the repairs of dggvtp --repair (see read_mesh), the results still per ve
     that one's distance; a source or target there is that one, or a ValueError if removed. Faces
     that repeat a vertex are dropped.
 
-The mesh goes through dggvtp's input policy: inconsistent orientations are fixed and vertices
-where several sheets meet are split (a RuntimeWarning and `repairs` say so), the copies still one
-point (paths cross from each sheet into the others there); results are still per vertex of V
+The mesh goes through dggvtp's input policy: inconsistent orientations are fixed (`repairs`
+says so; no warning: orientation changes no distance) and vertices where several sheets meet are
+split (a RuntimeWarning and `repairs` say so), the copies still one point (paths cross from each sheet into the others there); results are still per vertex of V
 (the nearest copy). A face on the same three vertices as another is dropped first (a
 RuntimeWarning). Degenerate faces, slivers, too short edges and too sharp cone
 tips raise ValueError with the library's message.
@@ -124,7 +126,9 @@ max_distance, threads < 0.
 )";
 
 const char* const distances_from_each = R"(One distance field per source vertex: a float64 array (len(sources), num_vertices) whose row k
-is distances(sources[k]) (as dggvtp-batch's rows, bit for bit). With threads != 1 the rows are
+is distances(sources[k]) (as dggvtp-batch's rows, bit for bit). sources: vertex indices (None is
+refused: it would be num_vertices rows of num_vertices numbers; pass range(solver.num_vertices)
+to mean it). With threads != 1 the rows are
 shared among the threads, each row one sequential propagation. It holds len(sources) x
 num_vertices numbers: for the distances within a radius from many sources, see
 local_distance_matrix().
@@ -154,28 +158,44 @@ entry. Raises ValueError for a max_distance that is negative, NaN or inf, a form
 )";
 
 const char* const target_distances = R"(Distances of chosen targets to the nearest source; the propagation stops once they are final
-(cheaper than a full field for near targets).
+(cheaper than a full field for near targets). solver.target_distances(0, [5, 9]): from vertex 0
+to vertices 5 and 9.
 
 targets: vertex indices; target_points: (k, 3) surface points; target_face_points: (faces,
 barycentric) points on faces of F (exact distance at the point, not an interpolation). Returns a
 float64 array: the targets' distances, then the points', then the face points', inf where
-unreachable. The same values as dggvtp --target / --target-point.
+unreachable. The same values as dggvtp --target / --target-point. With return_labels=True,
+returns (distances, labels): labels int64, each target's nearest source (its index in the list of
+the sources followed by the points and the face points), -1 where unreachable.
 )";
 
 const char* const shortest_paths = R"(The shortest paths on the surface from several targets (targets: vertices, target_points: 3D
 points, target_face_points: (faces, barycentric)) back to their nearest sources, from one
 propagation that stops once they are final. Returns (paths, lengths): a list of float64 arrays
-(m, 3) of points, from the target to the source, in the order targets, target_points,
-target_face_points (an unreachable target's path is empty, (0, 3)), and a float64 array of their
-lengths (inf where unreachable), each the target's distance. The same points as dggvtp
---path-to / --path-to-point --paths.
+(m, 3) of points in the order targets, target_points, target_face_points (an unreachable
+target's path is empty, (0, 3)), and a float64 array of their lengths (inf where unreachable):
+the summed lengths of the segments between the returned points, which are the targets'
+distances to rounding (a few 1e-16 relative).
+
+The points run from the target to the source, as pygeodesic's paths and dggvtp --paths do; with
+source_first=True from the source to the target, as potpourri3d's find_geodesic_path(v_start,
+v_end) (v_start the source). The same points as dggvtp --path-to / --path-to-point --paths.
 )";
 
 const char* const shortest_path = R"(The shortest path on the surface from one target (a vertex `target`, a surface point
 `target_point`, or a point on a face `target_face_point` = (face, barycentric)) back to its
-nearest source: a float64 array (m, 3) of points, from the target to the source; empty (0, 3) if
-the target is unreachable. Its length is the target's distance. shortest_paths() traces several
-from one propagation.
+nearest source: a float64 array (m, 3) of points, from the target to the source (source_first=True:
+from the source to the target); empty (0, 3) if the target is unreachable.
+solver.shortest_path(14, 22): from vertex 22 back to vertex 14. Its length is the target's
+distance to rounding. shortest_paths() traces several from one propagation.
+)";
+
+const char* const geodesic_distance = R"(The geodesic distance between two vertices and the shortest path between them, as pygeodesic's
+geodesicDistance(source, target): returns (distance, path), distance a float (inf if the target
+is unreachable) and path a float64 array (m, 3) of points from the target to the source
+(source_first=True: from the source to the target; (0, 3) if unreachable). The distance is the
+path's length (the target's distance to rounding, a few 1e-16 relative). One propagation, which
+stops once the target's distance is final.
 )";
 
 } // namespace doc

@@ -10,6 +10,7 @@
 
 #include "Soup_solver.h"
 #include "arguments.h"
+#include "interrupt.h"
 #include "typed_object.h"
 
 #include <CGAL/DGG_VTP_3/version.h>
@@ -18,10 +19,12 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -42,9 +45,27 @@ using dggvtp::Place;
 
 const double infinity = std::numeric_limits<double>::infinity();
 
+// The stack level of a warning that points at the caller's line: past the frames of this
+// package's own Python code (geodesic_distances, dggvtp.gdist, the argument checks), which
+// would be named instead.
+int caller_stack_level()
+{
+  static const std::string package = py::str(py::module_::import("os.path").attr("dirname")(
+    py::module_::import("dggvtp._dggvtp").attr("__file__")));
+  int level = 1;
+  for(py::object frame = py::module_::import("sys").attr("_getframe")(0); !frame.is_none();
+      frame = frame.attr("f_back"), ++level)
+  {
+    const std::string file = py::str(frame.attr("f_code").attr("co_filename"));
+    if(file.compare(0, package.size(), package) != 0 || file.size() <= package.size() || file[package.size()] != '/')
+      break;
+  }
+  return level;
+}
+
 void warn(const std::string& message)
 {
-  if(PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 1) != 0) // the warnings filter made it an error
+  if(PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), caller_stack_level()) != 0) // the filter made it an error
     throw py::error_already_set();
 }
 
@@ -97,6 +118,8 @@ struct Geodesic_solver
 {
   std::unique_ptr<Solver_interface> solver;
   std::string precision;
+  bool repair = false;
+  long threads = 1; // of the preparation
 
   std::size_t vertices() const { return solver->number_of_vertices(); }
 
@@ -145,17 +168,23 @@ struct Geodesic_solver
   }
 
   // the paths of one propagation as (m, 3) arrays, and their lengths
+  // (from the target to the source, or `source_first`)
   std::pair<std::vector<py::array_t<double>>, py::array_t<double>> paths(Query& q, const Named_places& sources,
-                                                                         const Named_places& targets) const
+                                                                         const Named_places& targets,
+                                                                         bool source_first) const
   {
     q.sources = sources.places;
     q.path_targets = targets.places;
     std::vector<dggvtp::Moved_point> moved;
     Paths paths;
-    {
-      py::gil_scoped_release unlocked;
+    Interrupt_check interrupt;
+    q.interrupted = std::ref(interrupt);
+    interrupt.run_released([&] {
       paths = solver->shortest_paths(q, moved);
-    }
+      if(source_first)
+        for(auto& path : paths)
+          std::reverse(path.first.begin(), path.first.end());
+    });
     const Named_places* ranges[3] = {&sources, &targets, &targets};
     warn_moved(moved, ranges);
     std::vector<py::array_t<double>> lines;
@@ -175,22 +204,49 @@ struct Geodesic_solver
 
 dggvtp::Repair_option repair_option(bool repair) { return {"repair=True", repair}; }
 
+Geodesic_solver make_geodesic_solver(const Array_like& V, const Array_like& F, const std::string& precision,
+                                     bool repair, long threads)
+{
+  if(precision != "double" && precision != "float")
+    bad("precision must be 'double' or 'float', not '" + precision + "'");
+  if(threads < 0)
+    bad("threads must be >= 0 (0: all cores)");
+  std::vector<std::array<std::uint32_t, 3>> faces;
+  dggvtp::Loaded_soup soup = soup_of_arrays(V, F, repair_option(repair), faces);
+  Geodesic_solver s;
+  s.precision = precision;
+  s.repair = repair;
+  s.threads = threads;
+  {
+    py::gil_scoped_release unlocked;
+    s.solver = make_soup_solver(std::move(soup), std::move(faces), precision, repair_option(repair), threads);
+  }
+  // Faces turned to agree with their neighbours change no distance: `repairs` says so, no warning
+  // (gdist's flat test mesh had one on every solver).
+  for(const std::string& line : s.solver->repairs())
+    if(line.rfind("reoriented ", 0) != 0)
+      warn("GeodesicSolver(V, F): " + line);
+  return s;
+}
+
 // The method `name` of `c` that takes the arguments of the queries to several targets and answers
 // f(solver, query, sources, targets)
+// f(solver, query, sources, targets, flag), `flag` the last keyword argument (`flag_name`)
 template <class Class, class F>
-void def_targets_query(Class& c, const char* name, F f, const char* doc)
+void def_targets_query(Class& c, const char* name, F f, const char* flag_name, const char* doc)
 {
   c.def(
     name,
-    [f](const Geodesic_solver& s, const Vertices& sources, const Points& points, const Face_points& face_points,
-        const Vertices& targets, const Points& target_points, const Face_points& target_face_points, double epsilon,
-        double max_distance, long threads) {
+    [f](const Geodesic_solver& s, const Vertices& sources, const Vertices& targets, const Points& points,
+        const Face_points& face_points, const Points& target_points, const Face_points& target_face_points,
+        double epsilon, double max_distance, long threads, bool flag) {
       Query q = s.query(epsilon, max_distance, threads);
-      return f(s, q, s.sources(sources, points, face_points), s.targets(targets, target_points, target_face_points));
+      return f(s, q, s.sources(sources, points, face_points), s.targets(targets, target_points, target_face_points),
+               flag);
     },
-    "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
-    "targets"_a = py::none(), "target_points"_a = py::none(), "target_face_points"_a = py::none(), "epsilon"_a = 0.,
-    "max_distance"_a = infinity, "threads"_a = 1, doc);
+    "sources"_a = py::none(), "targets"_a = py::none(), py::kw_only(), "points"_a = py::none(),
+    "face_points"_a = py::none(), "target_points"_a = py::none(), "target_face_points"_a = py::none(),
+    "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1, py::arg(flag_name) = false, doc);
 }
 
 std::pair<py::array_t<double>, py::array_t<std::int64_t>> read_mesh(const Path& path, bool repair)
@@ -283,25 +339,28 @@ PYBIND11_MODULE(_dggvtp, m)
 
   py::class_<Geodesic_solver> solver(m, "GeodesicSolver", doc::solver);
   solver
-    .def(py::init([](const Array_like& V, const Array_like& F, const std::string& precision, bool repair,
-                     long threads) {
-           if(precision != "double" && precision != "float")
-             bad("precision must be 'double' or 'float', not '" + precision + "'");
-           if(threads < 0)
-             bad("threads must be >= 0 (0: all cores)");
-           std::vector<std::array<std::uint32_t, 3>> faces;
-           dggvtp::Loaded_soup soup = soup_of_arrays(V, F, repair_option(repair), faces);
-           Geodesic_solver s;
-           s.precision = precision;
-           {
-             py::gil_scoped_release unlocked;
-             s.solver = make_soup_solver(std::move(soup), std::move(faces), precision, repair_option(repair), threads);
-           }
-           for(const std::string& line : s.solver->repairs())
-             warn("GeodesicSolver(V, F): " + line);
-           return s;
-         }),
-         "V"_a, "F"_a, "precision"_a = "double", py::kw_only(), "repair"_a = false, "threads"_a = 1, doc::init)
+    .def(py::init(&make_geodesic_solver), "V"_a, "F"_a, "precision"_a = "double", py::kw_only(), "repair"_a = false,
+         "threads"_a = 1, doc::init)
+    // pickle and copy: V and F as given, and the options; rebuilt, not copied
+    .def(py::pickle(
+      [](const Geodesic_solver& s) {
+        const auto [points, faces] = s.solver->given_mesh();
+        py::array_t<double> V({py::ssize_t(points.size()), py::ssize_t(3)});
+        py::array_t<std::int64_t> F({py::ssize_t(faces.size()), py::ssize_t(3)});
+        for(std::size_t i = 0; i < points.size(); ++i)
+          for(int c = 0; c < 3; ++c)
+            V.mutable_at(i, c) = points[i][c];
+        for(std::size_t t = 0; t < faces.size(); ++t)
+          for(int k = 0; k < 3; ++k)
+            F.mutable_at(t, k) = std::int64_t(faces[t][k]);
+        return py::make_tuple(V, F, s.precision, s.repair, s.threads);
+      },
+      [](const py::tuple& t) {
+        if(t.size() != 5)
+          bad("not the pickled state of a GeodesicSolver");
+        return make_geodesic_solver(Array_like{t[0]}, Array_like{t[1]}, t[2].cast<std::string>(), t[3].cast<bool>(),
+                                    t[4].cast<long>());
+      }))
     .def_property_readonly("num_vertices", &Geodesic_solver::vertices, doc::num_vertices)
     .def_property_readonly("num_faces", [](const Geodesic_solver& s) { return s.solver->number_of_triangles(); },
                            doc::num_faces)
@@ -321,11 +380,12 @@ PYBIND11_MODULE(_dggvtp, m)
         long long* out_labels = return_labels ? reinterpret_cast<long long*>(labels.mutable_data()) : nullptr;
         std::vector<dggvtp::Moved_point> moved;
         std::size_t unreachable = 0;
-        {
-          py::gil_scoped_release unlocked;
+        Interrupt_check interrupt;
+        q.interrupted = std::ref(interrupt);
+        interrupt.run_released([&] {
           s.solver->distances(q, out, out_labels, moved);
           unreachable = dggvtp::count_infinite(out, out + n);
-        }
+        });
         const Named_places* ranges[3] = {&named, nullptr, nullptr};
         warn_moved(moved, ranges);
         warn_unreachable(unreachable, std::size_t(n), "vertices", max_distance);
@@ -338,18 +398,23 @@ PYBIND11_MODULE(_dggvtp, m)
     .def(
       "distances_from_each",
       [](const Geodesic_solver& s, const Vertices& sources, double epsilon, double max_distance, long threads) {
+        if(sources.object.is_none())
+          bad("distances_from_each() needs its sources: None would be num_vertices rows of num_vertices "
+              "numbers (pass range(solver.num_vertices) for that; local_distance_matrix() keeps those "
+              "within a radius)");
         Query q = s.query(epsilon, max_distance, threads);
         q.sources = vertex_places(sources, "source", s.vertices());
         const std::size_t n = s.vertices();
         py::array_t<double> rows({py::ssize_t(q.sources.size()), py::ssize_t(n)});
         double* out = rows.mutable_data();
         dggvtp::Unreachable_rows unreachable;
-        {
-          py::gil_scoped_release unlocked;
+        Interrupt_check interrupt;
+        q.interrupted = std::ref(interrupt);
+        interrupt.run_released([&] {
           s.solver->distances_from_each(q, out);
           for(std::size_t k = 0; k < q.sources.size(); ++k)
             unreachable.add(out + k * n, out + (k + 1) * n);
-        }
+        });
         if(std::isinf(max_distance) && unreachable.rows > 0)
           warn(dggvtp::unreachable_rows_warning(unreachable.rows, q.sources.size(), unreachable.most, n));
         return rows;
@@ -372,12 +437,13 @@ PYBIND11_MODULE(_dggvtp, m)
         if(!sources.object.is_none() && q.sources.empty())
           bad("no source given: sources=None (the default) is every vertex");
         std::vector<dggvtp::Sparse_row> rows(sources.object.is_none() ? s.vertices() : q.sources.size());
-        {
-          py::gil_scoped_release unlocked;
+        Interrupt_check interrupt;
+        q.interrupted = std::ref(interrupt);
+        interrupt.run_released([&] {
           s.solver->local_distance_matrix(q, [&rows](std::size_t k, dggvtp::Sparse_row&& row) { rows[k] = std::move(row); });
           if(symmetric)
             dggvtp::make_symmetric(rows);
-        }
+        });
         // a symmetric matrix's rows are its columns; otherwise CSC is the CSR of the transpose
         const bool by_column = format == "csc";
         const std::size_t sources_count = rows.size();
@@ -403,43 +469,63 @@ PYBIND11_MODULE(_dggvtp, m)
       "symmetric"_a = false, "format"_a = "csr", doc::local_distance_matrix);
   def_targets_query(
     solver, "target_distances",
-    [](const Geodesic_solver& s, Query& q, const Named_places& named_sources, const Named_places& named_targets) {
+    [](const Geodesic_solver& s, Query& q, const Named_places& named_sources, const Named_places& named_targets,
+       bool return_labels) -> Field {
       q.sources = named_sources.places;
       q.targets = named_targets.places;
       std::vector<double> t;
+      std::vector<long long> labels;
       std::vector<dggvtp::Moved_point> moved;
-      {
-        py::gil_scoped_release unlocked;
-        t = s.solver->target_distances(q, moved);
-      }
+      Interrupt_check interrupt;
+      q.interrupted = std::ref(interrupt);
+      interrupt.run_released([&] { t = s.solver->target_distances(q, moved, return_labels ? &labels : nullptr); });
       const Named_places* ranges[3] = {&named_sources, &named_targets, nullptr};
       warn_moved(moved, ranges);
       warn_unreachable(dggvtp::count_infinite(t), t.size(), "targets", q.max_distance);
-      return py::array_t<double>(py::ssize_t(t.size()), t.data());
+      py::array_t<double> d(py::ssize_t(t.size()), t.data());
+      if(return_labels)
+        return {py::make_tuple(d, py::array_t<std::int64_t>(py::ssize_t(labels.size()),
+                                                            reinterpret_cast<const std::int64_t*>(labels.data())))};
+      return {std::move(d)};
     },
-    doc::target_distances);
+    "return_labels", doc::target_distances);
   def_targets_query(
     solver, "shortest_paths",
-    [](const Geodesic_solver& s, Query& q, const Named_places& sources, const Named_places& targets) {
-      return s.paths(q, sources, targets);
-    },
-    doc::shortest_paths);
+    [](const Geodesic_solver& s, Query& q, const Named_places& sources, const Named_places& targets,
+       bool source_first) { return s.paths(q, sources, targets, source_first); },
+    "source_first", doc::shortest_paths);
   solver.def(
     "shortest_path",
-    [](const Geodesic_solver& s, const Vertices& sources, const Points& points, const Face_points& face_points,
-       const Vertices& target, const Points& target_point, const Face_points& target_face_point, double epsilon,
-       double max_distance, long threads) {
+    [](const Geodesic_solver& s, const Vertices& sources, const Vertices& target, const Points& points,
+       const Face_points& face_points, const Points& target_point, const Face_points& target_face_point,
+       double epsilon, double max_distance, long threads, bool source_first) {
       Query q = s.query(epsilon, max_distance, threads);
       const Named_places t =
         s.places(target, target_point, target_face_point, {"target", "target_point", "target_face_point", "target"});
       if(t.places.size() != 1)
         bad("give one target: target (a vertex), target_point (3 coordinates) or target_face_point ((face, "
             "barycentric))");
-      return s.paths(q, s.sources(sources, points, face_points), t).first.front();
+      return s.paths(q, s.sources(sources, points, face_points), t, source_first).first.front();
     },
-    "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
-    "target"_a = py::none(), "target_point"_a = py::none(), "target_face_point"_a = py::none(), "epsilon"_a = 0.,
-    "max_distance"_a = infinity, "threads"_a = 1, doc::shortest_path)
+    "sources"_a = py::none(), "target"_a = py::none(), py::kw_only(), "points"_a = py::none(),
+    "face_points"_a = py::none(), "target_point"_a = py::none(), "target_face_point"_a = py::none(),
+    "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1, "source_first"_a = false, doc::shortest_path)
+    .def(
+      "geodesic_distance",
+      [](const Geodesic_solver& s, const Vertices& source, const Vertices& target, double epsilon,
+         double max_distance, long threads, bool source_first) {
+        Query q = s.query(epsilon, max_distance, threads);
+        const Named_places from = s.places(source, Points{py::none()}, Face_points{py::none()},
+                                           {"source", "points", "face_points", "source"});
+        const Named_places to = s.places(target, Points{py::none()}, Face_points{py::none()},
+                                         {"target", "target_point", "target_face_point", "target"});
+        if(from.places.size() != 1 || to.places.size() != 1)
+          bad("geodesic_distance takes one source vertex and one target vertex (shortest_paths() takes several)");
+        auto [paths, lengths] = s.paths(q, from, to, source_first);
+        return py::make_tuple(py::float_(lengths.at(0)), paths.front());
+      },
+      "source"_a, "target"_a, py::kw_only(), "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1,
+      "source_first"_a = false, doc::geodesic_distance)
     .def("__repr__", [](const Geodesic_solver& s) {
       return "<dggvtp.GeodesicSolver: " + std::to_string(s.vertices()) + " vertices, " +
              std::to_string(s.solver->number_of_triangles()) + " faces, " + s.precision + ">";

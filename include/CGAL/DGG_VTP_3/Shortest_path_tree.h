@@ -94,6 +94,21 @@ public:
   /// the number of the nearest source of `v` in the query's order (`std::size_t(-1)` if unreachable)
   std::size_t nearest_source(vertex_descriptor v) const { return m_nearest[m_core->checked_vertex(v)]; }
 
+  /// the number of the nearest source of the `k`-th target of the query, vertex or point, in the
+  /// query's order (`std::size_t(-1)` if unreachable or beyond the query's maximum distance)
+  std::size_t target_nearest_source(std::size_t k) const
+  {
+    const Place& place = checked_place(k);
+    if(!(target_distance(k) < internal::Number_type_math<FT>::infinity()))
+      return std::size_t(-1);
+    if(place.first)
+      return m_nearest[place.second];
+    // a point's origin is a vertex, or the number of vertices plus its source's number
+    const Index origin = m_targets[place.second].origin;
+    const Index nv = Index(m_nearest.size());
+    return origin < nv ? m_nearest[origin] : origin == no_origin() ? std::size_t(-1) : std::size_t(origin - nv);
+  }
+
   /// writes the shortest path from `target` to its nearest source into `out`, as `Path_point`s,
   /// from the target to the source; nothing if it is unreachable
   template <class OutputIterator>

@@ -8,6 +8,8 @@ sparse matrices of the distances within a radius. NumPy arrays in, NumPy arrays 
     d = dggvtp.geodesic_distances(V, F, 0)        # one call
     solver = dggvtp.GeodesicSolver(V, F)          # or prepared once, for many queries
     d = solver.distances(0)
+    distance, path = solver.geodesic_distance(0, 7)   # one pair, as pygeodesic
+    import dggvtp.gdist as gdist                       # gdist's functions, as tvb-gdist
 
 help(dggvtp.GeodesicSolver) documents every argument.
 """
@@ -20,7 +22,16 @@ except ModuleNotFoundError as e:  # the sources, python/src/dggvtp, have no comp
                               "(target dggvtp_python; PYTHONPATH=build/python) or install it (README.md, "
                               "section Python)") from e
 
+from ._short_errors import short_type_errors
+
 __all__ = ["GeodesicSolver", "InputError", "geodesic_distances", "read_mesh", "__version__"]
+
+# pybind11's TypeErrors print every argument (the whole V and F): one line instead
+read_mesh = short_type_errors(read_mesh, "read_mesh")
+for _name in ("__init__", "distances", "distances_from_each", "local_distance_matrix", "target_distances",
+              "shortest_paths", "shortest_path", "geodesic_distance"):
+    setattr(GeodesicSolver, _name, short_type_errors(getattr(GeodesicSolver, _name), f"GeodesicSolver.{_name}"))
+del _name
 
 
 def geodesic_distances(V: Any, F: Any, sources: Any = None, *, precision: str = "double", repair: bool = False,

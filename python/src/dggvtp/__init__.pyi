@@ -1,9 +1,9 @@
 # Type information of the package dggvtp (PEP 561, with py.typed): what __init__.py exports.
-from typing import Literal, Tuple, overload
+from typing import Literal, Tuple, Union, overload
 
 import numpy.typing as npt
 
-from ._dggvtp import _FacePoints, _Points, _Vertices, _Distances, _Labels
+from ._dggvtp import _FacePoints, _Points, _Real, _Vertices, _Distances, _Labels
 from ._dggvtp import GeodesicSolver as GeodesicSolver
 from ._dggvtp import InputError as InputError
 from ._dggvtp import __version__ as __version__
@@ -13,12 +13,18 @@ __all__ = ["GeodesicSolver", "InputError", "geodesic_distances", "read_mesh", "_
 
 @overload
 def geodesic_distances(V: npt.ArrayLike, F: npt.ArrayLike, sources: _Vertices = None, *,
-                       precision: Literal["double", "float"] = "double", repair: bool = False,
-                       points: _Points = None, face_points: _FacePoints = None, epsilon: float = 0.0,
-                       max_distance: float = ..., threads: int = 1, return_labels: Literal[False] = False) -> _Distances: ...
+                       precision: str = "double", repair: bool = False,
+                       points: _Points = None, face_points: _FacePoints = None, epsilon: _Real = 0.0,
+                       max_distance: _Real = ..., threads: int = 1, return_labels: Literal[False] = False) -> _Distances: ...
 @overload
 def geodesic_distances(V: npt.ArrayLike, F: npt.ArrayLike, sources: _Vertices = None, *,
-                       precision: Literal["double", "float"] = "double", repair: bool = False,
-                       points: _Points = None, face_points: _FacePoints = None, epsilon: float = 0.0,
-                       max_distance: float = ..., threads: int = 1,
+                       precision: str = "double", repair: bool = False,
+                       points: _Points = None, face_points: _FacePoints = None, epsilon: _Real = 0.0,
+                       max_distance: _Real = ..., threads: int = 1,
                        return_labels: Literal[True]) -> Tuple[_Distances, _Labels]: ...
+@overload
+def geodesic_distances(V: npt.ArrayLike, F: npt.ArrayLike, sources: _Vertices = None, *,
+                       precision: str = "double", repair: bool = False,
+                       points: _Points = None, face_points: _FacePoints = None, epsilon: _Real = 0.0,
+                       max_distance: _Real = ..., threads: int = 1,
+                       return_labels: bool) -> Union[_Distances, Tuple[_Distances, _Labels]]: ...

@@ -1,7 +1,7 @@
 # Type information of the extension module dggvtp._dggvtp (PEP 561, with py.typed): its
 # signatures as help() shows them, and the documentation there.
 import os
-from typing import List, Literal, Optional, Tuple, Union, overload
+from typing import Any, List, Literal, Optional, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -10,6 +10,8 @@ import scipy.sparse
 __version__: str
 
 _Vertices = Union[int, npt.ArrayLike, None]
+_SourceVertices = Union[int, npt.ArrayLike]
+_Real = Union[float, np.floating[Any], np.integer[Any]]   # NumPy scalars too
 _Points = Optional[npt.ArrayLike]
 _FacePoints = Optional[Tuple[npt.ArrayLike, npt.ArrayLike]]
 _Distances = npt.NDArray[np.float64]
@@ -21,7 +23,7 @@ def read_mesh(path: Union[str, os.PathLike[str]], *,
               repair: bool = False) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
 
 class GeodesicSolver:
-    def __init__(self, V: npt.ArrayLike, F: npt.ArrayLike, precision: Literal["double", "float"] = "double", *,
+    def __init__(self, V: npt.ArrayLike, F: npt.ArrayLike, precision: str = "double", *,
                  repair: bool = False, threads: int = 1) -> None: ...
     @property
     def num_vertices(self) -> int: ...
@@ -33,25 +35,44 @@ class GeodesicSolver:
     def repairs(self) -> List[str]: ...
     @overload
     def distances(self, sources: _Vertices = None, *, points: _Points = None, face_points: _FacePoints = None,
-                  epsilon: float = 0.0, max_distance: float = ..., threads: int = 1,
+                  epsilon: _Real = 0.0, max_distance: _Real = ..., threads: int = 1,
                   return_labels: Literal[False] = False) -> _Distances: ...
     @overload
     def distances(self, sources: _Vertices = None, *, points: _Points = None, face_points: _FacePoints = None,
-                  epsilon: float = 0.0, max_distance: float = ..., threads: int = 1,
+                  epsilon: _Real = 0.0, max_distance: _Real = ..., threads: int = 1,
                   return_labels: Literal[True]) -> Tuple[_Distances, _Labels]: ...
-    def distances_from_each(self, sources: _Vertices, *, epsilon: float = 0.0, max_distance: float = ...,
+    @overload
+    def distances(self, sources: _Vertices = None, *, points: _Points = None, face_points: _FacePoints = None,
+                  epsilon: _Real = 0.0, max_distance: _Real = ..., threads: int = 1,
+                  return_labels: bool) -> Union[_Distances, Tuple[_Distances, _Labels]]: ...
+    def distances_from_each(self, sources: _SourceVertices, *, epsilon: _Real = 0.0, max_distance: _Real = ...,
                             threads: int = 1) -> _Distances: ...
-    def local_distance_matrix(self, max_distance: float, sources: _Vertices = None, *, epsilon: float = 0.0,
+    def local_distance_matrix(self, max_distance: _Real, sources: _Vertices = None, *, epsilon: _Real = 0.0,
                               threads: int = 1, symmetric: bool = False,
                               format: str = 'csr') -> scipy.sparse.csr_matrix | scipy.sparse.csc_matrix: ...
-    def target_distances(self, sources: _Vertices = None, *, points: _Points = None, face_points: _FacePoints = None,
-                         targets: _Vertices = None, target_points: _Points = None,
-                         target_face_points: _FacePoints = None, epsilon: float = 0.0, max_distance: float = ...,
-                         threads: int = 1) -> _Distances: ...
-    def shortest_paths(self, sources: _Vertices = None, *, points: _Points = None, face_points: _FacePoints = None,
-                       targets: _Vertices = None, target_points: _Points = None,
-                       target_face_points: _FacePoints = None, epsilon: float = 0.0, max_distance: float = ...,
-                       threads: int = 1) -> Tuple[List[_Distances], _Distances]: ...
-    def shortest_path(self, sources: _Vertices = None, *, points: _Points = None, face_points: _FacePoints = None,
-                      target: _Vertices = None, target_point: _Points = None, target_face_point: _FacePoints = None,
-                      epsilon: float = 0.0, max_distance: float = ..., threads: int = 1) -> _Distances: ...
+    @overload
+    def target_distances(self, sources: _Vertices = None, targets: _Vertices = None, *, points: _Points = None,
+                         face_points: _FacePoints = None, target_points: _Points = None,
+                         target_face_points: _FacePoints = None, epsilon: _Real = 0.0, max_distance: _Real = ...,
+                         threads: int = 1, return_labels: Literal[False] = False) -> _Distances: ...
+    @overload
+    def target_distances(self, sources: _Vertices = None, targets: _Vertices = None, *, points: _Points = None,
+                         face_points: _FacePoints = None, target_points: _Points = None,
+                         target_face_points: _FacePoints = None, epsilon: _Real = 0.0, max_distance: _Real = ...,
+                         threads: int = 1, return_labels: Literal[True]) -> Tuple[_Distances, _Labels]: ...
+    @overload
+    def target_distances(self, sources: _Vertices = None, targets: _Vertices = None, *, points: _Points = None,
+                         face_points: _FacePoints = None, target_points: _Points = None,
+                         target_face_points: _FacePoints = None, epsilon: _Real = 0.0, max_distance: _Real = ...,
+                         threads: int = 1,
+                         return_labels: bool) -> Union[_Distances, Tuple[_Distances, _Labels]]: ...
+    def shortest_paths(self, sources: _Vertices = None, targets: _Vertices = None, *, points: _Points = None,
+                       face_points: _FacePoints = None, target_points: _Points = None,
+                       target_face_points: _FacePoints = None, epsilon: _Real = 0.0, max_distance: _Real = ...,
+                       threads: int = 1, source_first: bool = False) -> Tuple[List[_Distances], _Distances]: ...
+    def shortest_path(self, sources: _Vertices = None, target: _Vertices = None, *, points: _Points = None,
+                      face_points: _FacePoints = None, target_point: _Points = None,
+                      target_face_point: _FacePoints = None, epsilon: _Real = 0.0, max_distance: _Real = ...,
+                      threads: int = 1, source_first: bool = False) -> _Distances: ...
+    def geodesic_distance(self, source: int, target: int, *, epsilon: _Real = 0.0, max_distance: _Real = ...,
+                          threads: int = 1, source_first: bool = False) -> Tuple[float, _Distances]: ...

@@ -1,0 +1,83 @@
+// Copyright (c) 2026 The DGG-VTP for CGAL authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): DGG-VTP for CGAL team
+
+// Ctrl-C during a call. Python's SIGINT handler only sets a flag; the KeyboardInterrupt is
+// raised when the main thread next runs Python code, which a call that released the GIL does
+// not do until it returns (16.7 s after SIGINT for a local matrix of the bunny). So the calls
+// ask Python for pending signals themselves, from the propagation's progress callback and
+// between rows, and cancel the query when one raised.
+
+#ifndef DGGVTP_PYTHON_INTERRUPT_H
+#define DGGVTP_PYTHON_INTERRUPT_H
+
+#include <CGAL/DGG_VTP_3/Propagation_cancelled.h>
+
+#include <pybind11/pybind11.h>
+
+#include <atomic>
+#include <chrono>
+#include <optional>
+#include <thread>
+#include <utility>
+
+namespace dggvtp {
+namespace python {
+
+class Interrupt_check
+{
+public:
+  // made where the GIL is held, on the thread that called from Python
+  Interrupt_check() : m_caller(std::this_thread::get_id()) {}
+
+  // Whether the call must stop, from any thread, the GIL released: the caller's thread asks
+  // Python for its pending signals (at most every 20 ms: it takes the GIL); the other threads
+  // only learn what it found.
+  bool operator()()
+  {
+    if(m_raised.load(std::memory_order_relaxed))
+      return true;
+    if(std::this_thread::get_id() != m_caller)
+      return false;
+    const auto now = std::chrono::steady_clock::now();
+    if(now - m_last < std::chrono::milliseconds(20))
+      return false;
+    m_last = now;
+    pybind11::gil_scoped_acquire gil;
+    if(PyErr_CheckSignals() == 0)
+      return false;
+    m_error.emplace(); // takes the exception the handler raised (KeyboardInterrupt)
+    m_raised.store(true, std::memory_order_relaxed);
+    return true;
+  }
+
+  // Runs `f` with the GIL released; when a signal handler raised while it ran, raises that
+  // exception instead of what `f` threw on learning it (Propagation_cancelled).
+  template <class F>
+  void run_released(F&& f)
+  {
+    try
+    {
+      pybind11::gil_scoped_release unlocked;
+      std::forward<F>(f)();
+    }
+    catch(const CGAL::DGG_VTP_3::Propagation_cancelled&)
+    {
+      if(m_error)
+        throw *m_error;
+      throw;
+    }
+  }
+
+private:
+  std::thread::id m_caller;
+  std::chrono::steady_clock::time_point m_last{};
+  std::atomic<bool> m_raised{false};
+  std::optional<pybind11::error_already_set> m_error;
+};
+
+} // namespace python
+} // namespace dggvtp
+
+#endif // DGGVTP_PYTHON_INTERRUPT_H
