@@ -257,6 +257,11 @@ L = gdist.local_gdist_matrix(V, F, 0.1)
 P = gdist.distance_matrix_of_selected_points(V, F, [1, 2, 3], max_distance=None)
 n: int = s.num_vertices + s.num_faces + L.shape[0] + P.shape[0] + len(g)
 r: list = s.repairs
+kind: str = s.precision
+try:
+    dggvtp.GeodesicSolver(V, F[:0])
+except dggvtp.InputError as error:
+    message: str = str(error)
 version: str = dggvtp.__version__
 '''
 
