@@ -96,8 +96,10 @@ struct Tuning
   // Radians by which a saddle's shadow cone is widened for rounding (emitting more is safe).
   static FT shadow_widening() { return number<FT>(8) * Number_type_math<FT>::sqrt(rounding_margin(number<FT>(1))); }
 
-  // Slopes of distance differences come from distances minus sigma, which cancellation may
-  // cost up to sqrt(machine epsilon) of.
+  // Slopes of distance differences (the pairwise trimming's bounds) come from the rays' cosines,
+  // each a coordinate over a straight length computed directly (taken as a distance minus sigma,
+  // they lost machine epsilon x sigma / length, beyond this slack once sigma / length > 1e8, as
+  // on caps); the slack is far above their rounding and only widens the bounds (safe).
   static FT slope_slack() { return Number_type_math<FT>::sqrt(Number_type_math<FT>::machine_epsilon()); }
 
   // A vertex whose angle sum is below 2 pi by less than this (relative) is treated as a saddle

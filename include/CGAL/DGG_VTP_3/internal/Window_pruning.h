@@ -306,8 +306,12 @@ CGAL_DGG_VTP_3_HOT_INLINE void trim_pair(Window<FT>& u, Window<FT>& w)
   const FT hi = (std::min)(u.b1, w.b1);
   if(!(lo < hi))
     return;
-  const FT du_lo = u.distance_to_base_point(lo);
-  const FT du_hi = u.distance_to_base_point(hi);
+  // the straight lengths from each source image, kept for the slopes below (as differences of
+  // distances and sigma they would lose machine epsilon x sigma of themselves)
+  const FT lu_lo = length(Vec2<FT>{lo - u.source.x, -u.source.y});
+  const FT lu_hi = length(Vec2<FT>{hi - u.source.x, -u.source.y});
+  const FT du_lo = u.sigma + lu_lo;
+  const FT du_hi = u.sigma + lu_hi;
   const FT m = Tuning<FT>::rounding_margin((std::max)(du_lo, du_hi));
   // One pseudo-source unfolded two ways (through other sheets at copies, or around either side of
   // a vertex), within rounding: the same rays into the same face, so w adds nothing on the
@@ -322,8 +326,10 @@ CGAL_DGG_VTP_3_HOT_INLINE void trim_pair(Window<FT>& u, Window<FT>& w)
     return;
   }
   const auto difference = [&](FT x) { return u.distance_to_base_point(x) - w.distance_to_base_point(x); };
-  const FT f_lo = du_lo - w.distance_to_base_point(lo);
-  const FT f_hi = du_hi - w.distance_to_base_point(hi);
+  const FT lw_lo = length(Vec2<FT>{lo - w.source.x, -w.source.y});
+  const FT lw_hi = length(Vec2<FT>{hi - w.source.x, -w.source.y});
+  const FT f_lo = du_lo - (w.sigma + lw_lo);
+  const FT f_hi = du_hi - (w.sigma + lw_hi);
 
   // per piece, the sign of D_u - D_w: +1 u is farther, -1 w is farther or they tie, 0 unknown
   FT cuts[4] = {lo, hi, hi, hi};
@@ -333,8 +339,8 @@ CGAL_DGG_VTP_3_HOT_INLINE void trim_pair(Window<FT>& u, Window<FT>& w)
   // increasing along it: slopes in [a, b] bound the difference on the overlap from both sides
   // by lines through its ends, and when those bounds keep one sign, no root search is needed.
   const FT slack = Tuning<FT>::slope_slack();
-  const FT a = (lo - u.source.x) / (du_lo - u.sigma) - (hi - w.source.x) / (du_hi - f_hi - w.sigma) - slack;
-  const FT b = (hi - u.source.x) / (du_hi - u.sigma) - (lo - w.source.x) / (du_lo - f_lo - w.sigma) + slack;
+  const FT a = (lo - u.source.x) / lu_lo - (hi - w.source.x) / lw_hi - slack;
+  const FT b = (hi - u.source.x) / lu_hi - (lo - w.source.x) / lw_lo + slack;
   const FT len = hi - lo;
   const FT lowest = (a >= FT(0)) ? f_lo : (b <= FT(0)) ? f_hi
                   : f_lo + a * (f_hi - f_lo - b * len) / (a - b);
