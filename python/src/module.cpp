@@ -107,6 +107,16 @@ void warn_moved(const std::vector<dggvtp::Moved_point>& moved, const Named_place
          " away from the surface: taken at the nearest point of the surface");
 }
 
+// Runs `f` with the GIL released, Ctrl-C cancelling query `q` (see interrupt.h)
+template <class F>
+void run_interruptible(Query& q, F&& f)
+{
+  Interrupt_check interrupt;
+  q.interrupted = std::ref(interrupt);
+  interrupt.run_released(std::forward<F>(f));
+  q.interrupted = nullptr; // `interrupt` ends here
+}
+
 void warn_unreachable(std::size_t unreachable, std::size_t total, const char* what, double max_distance)
 {
   if(std::isinf(max_distance)) // beyond max_distance, they are unreached by request
@@ -177,9 +187,7 @@ struct Geodesic_solver
     q.path_targets = targets.places;
     std::vector<dggvtp::Moved_point> moved;
     Paths paths;
-    Interrupt_check interrupt;
-    q.interrupted = std::ref(interrupt);
-    interrupt.run_released([&] {
+    run_interruptible(q, [&] {
       paths = solver->shortest_paths(q, moved);
       if(source_first)
         for(auto& path : paths)
@@ -230,7 +238,6 @@ Geodesic_solver make_geodesic_solver(const Array_like& V, const Array_like& F, c
 }
 
 // The method `name` of `c` that takes the arguments of the queries to several targets and answers
-// f(solver, query, sources, targets)
 // f(solver, query, sources, targets, flag), `flag` the last keyword argument (`flag_name`)
 template <class Class, class F>
 void def_targets_query(Class& c, const char* name, F f, const char* flag_name, const char* doc)
@@ -380,9 +387,7 @@ PYBIND11_MODULE(_dggvtp, m)
         long long* out_labels = return_labels ? reinterpret_cast<long long*>(labels.mutable_data()) : nullptr;
         std::vector<dggvtp::Moved_point> moved;
         std::size_t unreachable = 0;
-        Interrupt_check interrupt;
-        q.interrupted = std::ref(interrupt);
-        interrupt.run_released([&] {
+        run_interruptible(q, [&] {
           s.solver->distances(q, out, out_labels, moved);
           unreachable = dggvtp::count_infinite(out, out + n);
         });
@@ -408,9 +413,7 @@ PYBIND11_MODULE(_dggvtp, m)
         py::array_t<double> rows({py::ssize_t(q.sources.size()), py::ssize_t(n)});
         double* out = rows.mutable_data();
         dggvtp::Unreachable_rows unreachable;
-        Interrupt_check interrupt;
-        q.interrupted = std::ref(interrupt);
-        interrupt.run_released([&] {
+        run_interruptible(q, [&] {
           s.solver->distances_from_each(q, out);
           for(std::size_t k = 0; k < q.sources.size(); ++k)
             unreachable.add(out + k * n, out + (k + 1) * n);
@@ -437,9 +440,7 @@ PYBIND11_MODULE(_dggvtp, m)
         if(!sources.object.is_none() && q.sources.empty())
           bad("no source given: sources=None (the default) is every vertex");
         std::vector<dggvtp::Sparse_row> rows(sources.object.is_none() ? s.vertices() : q.sources.size());
-        Interrupt_check interrupt;
-        q.interrupted = std::ref(interrupt);
-        interrupt.run_released([&] {
+        run_interruptible(q, [&] {
           s.solver->local_distance_matrix(q, [&rows](std::size_t k, dggvtp::Sparse_row&& row) { rows[k] = std::move(row); });
           if(symmetric)
             dggvtp::make_symmetric(rows);
@@ -476,9 +477,7 @@ PYBIND11_MODULE(_dggvtp, m)
       std::vector<double> t;
       std::vector<long long> labels;
       std::vector<dggvtp::Moved_point> moved;
-      Interrupt_check interrupt;
-      q.interrupted = std::ref(interrupt);
-      interrupt.run_released([&] { t = s.solver->target_distances(q, moved, return_labels ? &labels : nullptr); });
+      run_interruptible(q, [&] { t = s.solver->target_distances(q, moved, return_labels ? &labels : nullptr); });
       const Named_places* ranges[3] = {&named_sources, &named_targets, nullptr};
       warn_moved(moved, ranges);
       warn_unreachable(dggvtp::count_infinite(t), t.size(), "targets", q.max_distance);
