@@ -44,6 +44,7 @@
 #include <limits>
 #include <new>
 #include <optional>
+#include <tuple>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -82,6 +83,13 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
   --output FILE          one line per vertex of the file, in the file's order: the distance
                          printed with %.17g, or inf if no path on the surface reaches it;
                          '-' writes to standard output
+  --error-bounds FILE    one line per vertex of the file, in the file's order: a certified bound
+                         on the error of its distance (distance - exact distance is in [0, this]:
+                         the distance less the least key that reached the vertex, a lower bound
+                         of the exact distance; at most epsilon x the distance, 0 where the
+                         distance is certified exact, as at the sources and everywhere in the
+                         exact mode), printed with %.17g, inf where unreached; in the format of
+                         --output-format (ply, vtk: the field error_bound)
   --labels FILE          one line per vertex of the file, in the file's order: its nearest source,
                          the 0-based number of its --source or --source-point option in the order
                          given, or -1 if no source reaches it; '-' writes to standard output
@@ -105,7 +113,8 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          crossed
   --stats FILE           one JSON object: sizes, the time of each stage (load, repair, prepare,
                          locate, propagate, write) and the threads it used, window counts, peak
-                         memory
+                         memory; with --error-bounds, the largest and the mean certified bound
+                         over epsilon x distance and the share of the vertices certified exact
   --repair               repair the mesh with CGAL's Polygon_mesh_processing before the input
                          checks, once the faces that repeat a vertex are dropped (refused
                          without --repair): stitch_borders (coincident border edges),
@@ -189,6 +198,7 @@ struct Options : dggvtp::Propagation_options
   double max_distance = std::numeric_limits<double>::infinity();
   long threads = 1;
   std::string output;
+  std::string error_bounds;
   std::string labels;
   std::string output_format; // empty: by each file's extension
   std::string paths;
@@ -213,7 +223,7 @@ Options parse_options(int argc, char** argv)
   const auto places_of = [&](const std::string& option) -> std::vector<Place>& {
     return option == "--source" ? options.sources : option == "--target" ? options.targets : options.path_targets;
   };
-  dggvtp::Single_value_options single_value{"--max-distance", "--epsilon", "--precision", "--threads", "--output",
+  dggvtp::Single_value_options single_value{"--max-distance", "--epsilon", "--precision", "--threads", "--output", "--error-bounds",
                                             "--labels", "--output-format", "--paths", "--stats", "--isolines",
                                             "--isolines-at", "--isolines-output"};
   dggvtp::Argument_reader words(argc, argv, {{"-h", "--help"}, {"-o", "--output"}, {"-s", "--source"}}, usage_text);
@@ -267,9 +277,10 @@ Options parse_options(int argc, char** argv)
       continue;
     else if(arg == "--threads")
       options.threads = long(parse_number<std::size_t>(arg, value()));
-    else if(arg == "--output" || arg == "--stats" || arg == "--labels" || arg == "--paths")
+    else if(arg == "--output" || arg == "--stats" || arg == "--labels" || arg == "--paths" || arg == "--error-bounds")
     {
       std::string& file = arg == "--output" ? options.output
+                        : arg == "--error-bounds" ? options.error_bounds
                         : arg == "--stats"  ? options.stats
                         : arg == "--labels" ? options.labels : options.paths;
       file = value();
@@ -314,9 +325,9 @@ Options parse_options(int argc, char** argv)
   options.check();
   if(options.sources.empty())
     options.sources.push_back(Place());
-  if(options.stops_early() && !(options.output.empty() && options.labels.empty()))
+  if(options.stops_early() && !(options.output.empty() && options.labels.empty() && options.error_bounds.empty()))
     throw Usage_error("--target and --path-to stop the propagation before every vertex is final: "
-                      "--output and --labels need another run");
+                      "--output, --labels and --error-bounds need another run");
   if((options.isolines > 0 || !options.isolines_at.empty()) == options.isolines_output.empty())
     throw Usage_error("--isolines-output goes with --isolines or --isolines-at");
   if(options.isolines > 0 && !options.isolines_at.empty())
@@ -327,7 +338,7 @@ Options parse_options(int argc, char** argv)
   if(!options.paths.empty() && options.path_targets.empty())
     throw Usage_error("--paths needs --path-to or --path-to-point");
   if(int(options.output == "-") + int(options.labels == "-") + int(options.paths == "-") + int(options.isolines_output == "-") +
-       int(options.stops_early()) > 1)
+       int(options.error_bounds == "-") + int(options.stops_early()) > 1)
     throw Usage_error("only one output may go to standard output (the targets' and paths' lines are one)");
   return options;
 }
@@ -424,6 +435,7 @@ struct Run
   std::size_t threads = 1;        // that prepared the solver and propagated
   CGAL::DGG_VTP_3::Propagation_statistics statistics;
   std::vector<double> distances;        // per file vertex, unless the propagation stopped early
+  std::vector<double> error_bounds;     // per file vertex, with --error-bounds: distance - lower bound
   std::vector<long long> labels;        // per file vertex, with --labels: its nearest source's option, or -1
   std::vector<double> target_distances; // per --target
   std::vector<double> path_lengths;     // per --path-to
@@ -487,6 +499,7 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
   dggvtp::release_soup(soup);
 
   std::vector<FT> d(solver.number_of_vertices());
+  std::vector<FT> lower(options.error_bounds.empty() ? 0 : d.size());
   std::vector<std::size_t> nearest(options.labels.empty() ? 0 : d.size());
   std::vector<FT> at_targets;
   using Tree = decltype(solver.compute_shortest_path_tree(q.sources));
@@ -509,11 +522,16 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
   else if(!options.targets.empty())
     run.statistics = solver.template compute_distances_to_nearest_source<Tag>(
       q.sources, CGAL::make_property_map(d), DP::target_distances(std::back_inserter(at_targets), DP::targets(q.targets, np)));
-  else if(!options.labels.empty())
-    run.statistics = solver.template compute_distances_to_nearest_source<Tag>(
-      q.sources, CGAL::make_property_map(d), DP::nearest_source_map(CGAL::make_property_map(nearest), np));
   else
-    run.statistics = solver.template compute_distances_to_nearest_source<Tag>(q.sources, CGAL::make_property_map(d), np);
+  {
+    const auto field = [&](const auto& np) {
+      if(lower.empty())
+        return solver.template compute_distances_to_nearest_source<Tag>(q.sources, CGAL::make_property_map(d), np);
+      return solver.template compute_distances_to_nearest_source<Tag>(
+        q.sources, CGAL::make_property_map(d), DP::lower_bound_map(CGAL::make_property_map(lower), np));
+    };
+    run.statistics = options.labels.empty() ? field(np) : field(DP::nearest_source_map(CGAL::make_property_map(nearest), np));
+  }
   run.seconds_propagate = seconds_since(t1);
   if(line)
   {
@@ -538,6 +556,8 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
   if(!options.stops_early())
   {
     run.distances = dggvtp::file_vertex_distances(soup, d);
+    if(!lower.empty())
+      run.error_bounds = dggvtp::certified_errors(run.distances, dggvtp::file_vertex_distances(soup, lower));
     if(!label.empty())
       run.labels = dggvtp::file_vertex_labels(soup, d, label);
   }
@@ -627,17 +647,29 @@ void write_labels(const std::vector<long long>& labels, const std::string& path,
     write_values(path, std::string(), labels, put_label_line);
 }
 
-// --output in the format its option or extension gives; a PLY or VTK file reads the mesh again
-void write_output(const Run& run, const Options& options)
+// --output and --error-bounds in the format their option or extension gives; PLY and VTK files
+// read the mesh again (once for both)
+void write_fields(const Run& run, const Options& options)
 {
-  const std::string format = dggvtp::output_format_of(options.output, options.output_format);
-  if(format != "ply" && format != "vtk")
-    return write_distances(run.distances, options.output, format);
-  const dggvtp::File_mesh mesh = dggvtp::read_file_mesh(options.mesh, options.repair_option());
-  Output_file file(options.output);
-  (format == "ply" ? dggvtp::write_ply_field : dggvtp::write_vtk_field)(
-    file.get(), options.mesh, mesh, run.distances, options.labels.empty() ? nullptr : &run.labels);
-  file.commit();
+  std::optional<dggvtp::File_mesh> mesh;
+  for(const auto& [path, values, field] : {std::make_tuple(&options.output, &run.distances, "distance"),
+                                           std::make_tuple(&options.error_bounds, &run.error_bounds, "error_bound")})
+  {
+    if(path->empty())
+      continue;
+    const std::string format = dggvtp::output_format_of(*path, options.output_format);
+    if(format != "ply" && format != "vtk")
+    {
+      write_distances(*values, *path, format);
+      continue;
+    }
+    if(!mesh)
+      mesh = dggvtp::read_file_mesh(options.mesh, options.repair_option());
+    Output_file file(*path);
+    (format == "ply" ? dggvtp::write_ply_field : dggvtp::write_vtk_field)(
+      file.get(), options.mesh, *mesh, *values, options.labels.empty() ? nullptr : &run.labels, field);
+    file.commit();
+  }
 }
 
 std::string place_text(const Place& p)
@@ -684,6 +716,46 @@ void write_paths(const Run& run, const Options& options)
   file.commit();
 }
 
+// --error-bounds in --stats: the bounds over epsilon x distance, at the vertices reached (not at
+// the sources, where both are 0), and the share of those certified exact (a bound of 0)
+struct Bound_summary
+{
+  bool given = false;
+  double largest = 0., mean = 0., certified_exact = 1.;
+  std::string json() const
+  {
+    if(!given)
+      return "null";
+    char text[160];
+    std::snprintf(text, sizeof text, "{\"max_over_epsilon_distance\": %.6g, \"mean_over_epsilon_distance\": %.6g, "
+                                     "\"certified_exact\": %.6g}", largest, mean, certified_exact);
+    return text;
+  }
+};
+
+Bound_summary summarize_bounds(const Run& run, double epsilon)
+{
+  Bound_summary b;
+  b.given = !run.error_bounds.empty();
+  std::size_t reached = 0, exact = 0;
+  double sum = 0.;
+  for(std::size_t v = 0; v < run.error_bounds.size(); ++v)
+    if(std::isfinite(run.distances[v]) && run.distances[v] > 0.)
+    {
+      ++reached;
+      exact += run.error_bounds[v] == 0.;
+      const double r = epsilon > 0. ? run.error_bounds[v] / (epsilon * run.distances[v]) : 0.;
+      b.largest = (std::max)(b.largest, r);
+      sum += r;
+    }
+  if(reached > 0)
+  {
+    b.mean = sum / double(reached);
+    b.certified_exact = double(exact) / double(reached);
+  }
+  return b;
+}
+
 // What no path on the surface reaches from the sources: vertices, or targets and paths ("" when
 // all are reached). Beyond --max-distance they are unreached by request: no warning then.
 std::string unreachable_warning(const Run& run, const Options& options, std::size_t file_vertices)
@@ -711,6 +783,7 @@ int run_main(int argc, char** argv)
 
   // a mistake in an output's name costs a moment, not the whole computation
   for(const auto& [option, path] : {std::make_pair("--output", &options.output), std::make_pair("--labels", &options.labels),
+                                    std::make_pair("--error-bounds", &options.error_bounds),
                                     std::make_pair("--paths", &options.paths), std::make_pair("--stats", &options.stats)})
     if(!path->empty())
       dggvtp::check_writable(std::string(option) + " '" + *path + "'", *path);
@@ -751,6 +824,7 @@ int run_main(int argc, char** argv)
     throw dggvtp::Input_error(dggvtp::with_repair_hint(e.what(), repair));
   }
   repaired.apply(run.distances.empty() ? nullptr : run.distances.data(), run.labels.empty() ? nullptr : run.labels.data());
+  repaired.apply(run.error_bounds.empty() ? nullptr : run.error_bounds.data(), nullptr);
   const double seconds_repair = seconds_repair_soup + run.seconds_make_mesh;
   if(!options.quiet)
     for(const std::string& line : soup.repairs)
@@ -768,8 +842,7 @@ int run_main(int argc, char** argv)
 #endif
 
   const Clock::time_point t_write = Clock::now();
-  if(!options.output.empty())
-    write_output(run, options);
+  write_fields(run, options);
   if(!options.labels.empty())
     write_labels(run.labels, options.labels,
                  dggvtp::output_format_of(options.labels, options.output_format) == "npy" ? "npy" : "text");
@@ -803,6 +876,7 @@ int run_main(int argc, char** argv)
         farthest = (std::max)(farthest, d);
   const double rss = peak_rss_mb();
   const auto& s = run.statistics;
+  const Bound_summary bounds = summarize_bounds(run, options.epsilon);
   if(!options.stats.empty())
   {
     Output_file file(options.stats);
@@ -816,7 +890,7 @@ int run_main(int argc, char** argv)
                  "\"propagate\": %zu, \"write\": 1}, "
                  "\"windows_created\": %zu, \"windows_peak\": %zu, "
                  "\"pseudo_sources\": %zu, \"vertices_popped\": %zu, \"vertices_reached\": %zu, "
-                 "\"max_distance\": %.17g, \"peak_rss_mb\": %.1f}\n",
+                 "\"max_distance\": %.17g, \"peak_rss_mb\": %.1f, \"error_bounds\": %s}\n",
                  json_string(options.mesh).c_str(), soup.file_vertices, run.faces,
                  first.is_point ? "null" : std::to_string(first.vertex).c_str(), options.sources.size(),
                  options.targets.size(), options.path_targets.size(),
@@ -824,7 +898,7 @@ int run_main(int argc, char** argv)
                  options.epsilon, options.precision.c_str(), options.threads, seconds_read, seconds_repair,
                  run.seconds_prepare, run.seconds_locate, run.seconds_propagate, seconds_write, run.threads, run.threads,
                  s.windows_created, s.windows_peak,
-                 s.pseudo_sources, s.vertices_popped, s.vertices_reached, farthest, rss);
+                 s.pseudo_sources, s.vertices_popped, s.vertices_reached, farthest, rss, bounds.json().c_str());
     file.commit();
   }
   if(!options.quiet)
@@ -858,6 +932,12 @@ int run_main(int argc, char** argv)
         reached += std::isfinite(d) ? 1 : 0;
       out << "  reached " << reached << " of " << soup.file_vertices << " vertices, farthest at " << farthest << "\n";
     }
+    if(!run.error_bounds.empty())
+      out << "  certified exact: " << 100. * bounds.certified_exact << "% of the vertices reached"
+          << (options.epsilon > 0. ? ", error bound at most " + std::to_string(bounds.largest) + " epsilon x distance, " +
+                                       std::to_string(bounds.mean) + " on average"
+                                   : std::string())
+          << "\n";
     out << "  peak memory " << rss << " MB\n";
   }
   return 0;

@@ -70,11 +70,13 @@ public:
   // V (3D) and F as the caller gave them, to build the same solver again (pickle)
   virtual std::pair<std::vector<std::array<double, 3>>, std::vector<std::array<std::uint32_t, 3>>>
   given_mesh() const = 0;
-  // per vertex, into `distances` (and `labels` unless null)
-  virtual void distances(const Query& query, double* distances, long long* labels,
+  // per vertex, into `distances` (and, unless null, `labels` and the certified error `bounds`:
+  // distance - a lower bound of the exact distance)
+  virtual void distances(const Query& query, double* distances, long long* labels, double* bounds,
                          std::vector<Moved_point>& moved) const = 0;
-  // per source vertex of `query` (no points), a row of number_of_vertices() into `rows`
-  virtual void distances_from_each(const Query& query, double* rows) const = 0;
+  // per source vertex of `query` (no points), a row of number_of_vertices() into `rows` (and into
+  // `bounds` unless null)
+  virtual void distances_from_each(const Query& query, double* rows, double* bounds) const = 0;
   // per source vertex of `query` (every vertex if it has none), the vertices within its maximum
   // distance; each row is handed to `row(k, row)` from any thread
   virtual void local_distance_matrix(const Query& query,
@@ -127,29 +129,43 @@ public:
     return {m_given_points.empty() ? file_points() : m_given_points, m_faces};
   }
 
-  void distances(const Query& query, double* distances, long long* labels,
+  void distances(const Query& query, double* distances, long long* labels, double* bounds,
                  std::vector<Moved_point>& moved) const override
   {
+    namespace DP = CGAL::DGG_VTP_3::parameters;
     with_places(query, moved, [&](const auto& q) {
       Field field(*this, distances);
       std::vector<std::size_t> nearest(labels ? m_solver->number_of_vertices() : 0);
+      std::vector<FT> lower(bounds ? m_solver->number_of_vertices() : 0);
       with_threads(query.threads, [&](auto tag) {
-        using Tag = decltype(tag);
-        const auto np = one_query_parameters(query);
+        const auto field_query = [&](const auto& np) {
+          if(bounds)
+            m_solver->template compute_distances_to_nearest_source<decltype(tag)>(
+              q.sources, field.map(), DP::lower_bound_map(CGAL::make_property_map(lower), np));
+          else
+            m_solver->template compute_distances_to_nearest_source<decltype(tag)>(q.sources, field.map(), np);
+        };
         if(labels)
-          m_solver->template compute_distances_to_nearest_source<Tag>(
-            q.sources, field.map(), CGAL::DGG_VTP_3::parameters::nearest_source_map(CGAL::make_property_map(nearest), np));
+          field_query(DP::nearest_source_map(CGAL::make_property_map(nearest), one_query_parameters(query)));
         else
-          m_solver->template compute_distances_to_nearest_source<Tag>(q.sources, field.map(), np);
+          field_query(one_query_parameters(query));
       });
       const std::vector<long long> label = finish_sources(q, nearest, field.data());
       field.finish(labels, label);
+      if(bounds)
+      {
+        std::vector<double> lower_file = file_vertex_distances(m_soup, lower);
+        m_record.apply(lower_file.data(), nullptr);
+        const std::vector<double> errors =
+          certified_errors(std::vector<double>(distances, distances + number_of_vertices()), lower_file);
+        std::copy(errors.begin(), errors.end(), bounds);
+      }
     });
   }
 
   // one sequential propagation per row (the rows shared among the threads), from every copy of
   // the source vertex, as dggvtp-batch computes its rows
-  void distances_from_each(const Query& query, double* rows) const override
+  void distances_from_each(const Query& query, double* rows, double* bounds) const override
   {
     const std::size_t n = number_of_vertices();
     with_threads(query.threads, [&](auto tag) {
@@ -159,7 +175,7 @@ public:
         one.sources.assign(1, query.sources[k]);
         one.threads = 1;
         std::vector<Moved_point> none; // vertices only
-        distances(one, rows + k * n, nullptr, none);
+        distances(one, rows + k * n, nullptr, bounds ? bounds + k * n : nullptr, none);
         return true;
       });
     });

@@ -119,6 +119,13 @@ max_distance). With return_labels=True, returns (distances, labels): labels int6
 (num_vertices,), the index of each vertex's nearest source in the list of the sources followed
 by the points and the face points, -1 where unreachable.
 
+With return_bounds=True, the certified error of each distance comes last ((distances, bounds),
+or (distances, labels, bounds)): a float64 array (num_vertices,) such that the exact distance
+lies in [distances - bounds, distances]; at most epsilon x distances, 0 where the distance is
+certified exact (the sources, every vertex in the exact mode), inf where unreachable. The
+distance less the least key that reached the vertex (see the manual, "Certified error"); the
+values of dggvtp --error-bounds.
+
 The same values as dggvtp --source ... --source-point ... --output, bit for bit.
 Raises ValueError for an index out of range, no source, points that are not finite, barycentric
 coordinates that are negative or do not add up to 1, an epsilon outside [0, 1], a negative or NaN
@@ -131,7 +138,8 @@ refused: it would be num_vertices rows of num_vertices numbers; pass range(solve
 to mean it). With threads != 1 the rows are
 shared among the threads, each row one sequential propagation. It holds len(sources) x
 num_vertices numbers: for the distances within a radius from many sources, see
-local_distance_matrix().
+local_distance_matrix(). With return_bounds=True, returns (rows, bounds): bounds[k] is the
+certified error of row k, as distances(sources[k], return_bounds=True) gives it.
 )";
 
 const char* const local_distance_matrix = R"(The distances within max_distance from each source vertex, as a scipy.sparse.csr_matrix of

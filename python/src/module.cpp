@@ -376,33 +376,39 @@ PYBIND11_MODULE(_dggvtp, m)
     .def(
       "distances",
       [](const Geodesic_solver& s, const Vertices& sources, const Points& points, const Face_points& face_points,
-         double epsilon, double max_distance, long threads, bool return_labels) -> Field {
+         double epsilon, double max_distance, long threads, bool return_labels, bool return_bounds) -> Field {
         Query q = s.query(epsilon, max_distance, threads);
         const Named_places named = s.sources(sources, points, face_points);
         q.sources = named.places;
         const py::ssize_t n = py::ssize_t(s.vertices());
         py::array_t<double> d(n);
         py::array_t<std::int64_t> labels(return_labels ? n : 0);
+        py::array_t<double> bounds(return_bounds ? n : 0);
         double* out = d.mutable_data();
         long long* out_labels = return_labels ? reinterpret_cast<long long*>(labels.mutable_data()) : nullptr;
+        double* out_bounds = return_bounds ? bounds.mutable_data() : nullptr;
         std::vector<dggvtp::Moved_point> moved;
         std::size_t unreachable = 0;
         run_interruptible(q, [&] {
-          s.solver->distances(q, out, out_labels, moved);
+          s.solver->distances(q, out, out_labels, out_bounds, moved);
           unreachable = dggvtp::count_infinite(out, out + n);
         });
         const Named_places* ranges[3] = {&named, nullptr, nullptr};
         warn_moved(moved, ranges);
         warn_unreachable(unreachable, std::size_t(n), "vertices", max_distance);
-        if(return_labels)
-          return {py::make_tuple(d, labels)};
+        if(return_labels && return_bounds)
+          return {py::make_tuple(d, labels, bounds)};
+        if(return_labels || return_bounds)
+          return {py::make_tuple(d, return_labels ? py::object(labels) : py::object(bounds))};
         return {std::move(d)};
       },
       "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
-      "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1, "return_labels"_a = false, doc::distances)
+      "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1, "return_labels"_a = false,
+      "return_bounds"_a = false, doc::distances)
     .def(
       "distances_from_each",
-      [](const Geodesic_solver& s, const Vertices& sources, double epsilon, double max_distance, long threads) {
+      [](const Geodesic_solver& s, const Vertices& sources, double epsilon, double max_distance, long threads,
+         bool return_bounds) -> Field {
         if(sources.object.is_none())
           bad("distances_from_each() needs its sources: None would be num_vertices rows of num_vertices "
               "numbers (pass range(solver.num_vertices) for that; local_distance_matrix() keeps those "
@@ -411,19 +417,22 @@ PYBIND11_MODULE(_dggvtp, m)
         q.sources = vertex_places(sources, "source", s.vertices());
         const std::size_t n = s.vertices();
         py::array_t<double> rows({py::ssize_t(q.sources.size()), py::ssize_t(n)});
+        py::array_t<double> bounds({py::ssize_t(return_bounds ? q.sources.size() : 0), py::ssize_t(n)});
         double* out = rows.mutable_data();
         dggvtp::Unreachable_rows unreachable;
         run_interruptible(q, [&] {
-          s.solver->distances_from_each(q, out);
+          s.solver->distances_from_each(q, out, return_bounds ? bounds.mutable_data() : nullptr);
           for(std::size_t k = 0; k < q.sources.size(); ++k)
             unreachable.add(out + k * n, out + (k + 1) * n);
         });
         if(std::isinf(max_distance) && unreachable.rows > 0)
           warn(dggvtp::unreachable_rows_warning(unreachable.rows, q.sources.size(), unreachable.most, n));
-        return rows;
+        if(return_bounds)
+          return {py::make_tuple(rows, bounds)};
+        return {std::move(rows)};
       },
       "sources"_a, py::kw_only(), "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1,
-      doc::distances_from_each)
+      "return_bounds"_a = false, doc::distances_from_each)
     .def(
       "local_distance_matrix",
       [](const Geodesic_solver& s, double max_distance, const Vertices& sources, double epsilon,

@@ -120,21 +120,23 @@ inline void check_field_sizes(const File_mesh& mesh, const std::vector<double>& 
     throw std::logic_error("a field file needs one distance and label per vertex of the file");
 }
 
-inline std::string header_comment(const std::string& mesh_name)
+inline std::string header_comment(const std::string& mesh_name, const std::string& field)
 {
   std::string name = mesh_name;
   std::replace(name.begin(), name.end(), '\n', ' ');
-  return "dggvtp geodesic distances on " + name;
+  return "dggvtp geodesic " + std::string(field == "distance" ? "distances" : "distance error bounds") + " on " + name;
 }
 
 } // namespace internal
 
 // Binary little-endian PLY: vertex x y z (float), `float quality` (the distance; where it is
 // infinite, the largest finite distance, so that a viewer's colour scale spans the reached part),
-// `double distance` (inf where unreached), `int label` when labels are given; faces as
-// `list uchar int vertex_indices`. Throws Input_error for a face of more than 255 vertices.
+// `double distance` (inf where unreached; or the property `field` so named), `int label` when
+// labels are given; faces as `list uchar int vertex_indices`. Throws Input_error for a face of
+// more than 255 vertices.
 inline void write_ply_field(std::FILE* file, const std::string& mesh_name, const File_mesh& mesh,
-                            const std::vector<double>& distances, const std::vector<long long>* labels)
+                            const std::vector<double>& distances, const std::vector<long long>* labels,
+                            const std::string& field = "distance")
 {
   internal::check_field_sizes(mesh, distances, labels);
   for(const auto& face : mesh.faces)
@@ -145,9 +147,9 @@ inline void write_ply_field(std::FILE* file, const std::string& mesh_name, const
     if(std::isfinite(d))
       largest = (std::max)(largest, float(d));
   internal::Byte_writer out(file, false);
-  out.text("ply\nformat binary_little_endian 1.0\ncomment " + internal::header_comment(mesh_name) +
+  out.text("ply\nformat binary_little_endian 1.0\ncomment " + internal::header_comment(mesh_name, field) +
            "\nelement vertex " + std::to_string(mesh.points.size()) +
-           "\nproperty float x\nproperty float y\nproperty float z\nproperty float quality\nproperty double distance\n" +
+           "\nproperty float x\nproperty float y\nproperty float z\nproperty float quality\nproperty double " + field + "\n" +
            (labels ? "property int label\n" : "") + "element face " + std::to_string(mesh.faces.size()) +
            "\nproperty list uchar int vertex_indices\nend_header\n");
   for(std::size_t v = 0; v < mesh.points.size(); ++v)
@@ -168,10 +170,11 @@ inline void write_ply_field(std::FILE* file, const std::string& mesh_name, const
 }
 
 // Legacy VTK polydata, binary (big-endian, as the format requires): POINTS (double), POLYGONS,
-// POINT_DATA with the scalars `distance` (double, inf where unreached) and `label` (int) when
-// labels are given.
+// POINT_DATA with the scalars `distance` (double, inf where unreached; or named `field`) and
+// `label` (int) when labels are given.
 inline void write_vtk_field(std::FILE* file, const std::string& mesh_name, const File_mesh& mesh,
-                            const std::vector<double>& distances, const std::vector<long long>* labels)
+                            const std::vector<double>& distances, const std::vector<long long>* labels,
+                            const std::string& field = "distance")
 {
   internal::check_field_sizes(mesh, distances, labels);
   std::size_t list_size = 0;
@@ -180,7 +183,7 @@ inline void write_vtk_field(std::FILE* file, const std::string& mesh_name, const
   if(list_size > std::size_t((std::numeric_limits<std::int32_t>::max)()))
     throw Input_error("the mesh has too many faces for a legacy VTK file");
   internal::Byte_writer out(file, true);
-  out.text("# vtk DataFile Version 3.0\n" + internal::header_comment(mesh_name).substr(0, 200) +
+  out.text("# vtk DataFile Version 3.0\n" + internal::header_comment(mesh_name, field).substr(0, 200) +
            "\nBINARY\nDATASET POLYDATA\nPOINTS " + std::to_string(mesh.points.size()) + " double\n");
   for(const auto& p : mesh.points)
     for(double c : p)
@@ -192,7 +195,7 @@ inline void write_vtk_field(std::FILE* file, const std::string& mesh_name, const
     for(std::uint32_t v : face)
       out.value(std::int32_t(v));
   }
-  out.text("\nPOINT_DATA " + std::to_string(mesh.points.size()) + "\nSCALARS distance double 1\nLOOKUP_TABLE default\n");
+  out.text("\nPOINT_DATA " + std::to_string(mesh.points.size()) + "\nSCALARS " + field + " double 1\nLOOKUP_TABLE default\n");
   for(double d : distances)
     out.value(d);
   if(labels)

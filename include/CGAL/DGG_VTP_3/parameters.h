@@ -35,6 +35,7 @@ struct max_distance_t {};
 struct targets_t {};
 struct target_distances_t {};
 struct nearest_source_map_t {};
+struct lower_bound_map_t {};
 struct copy_of_t {};
 struct concurrency_tag_t {};
 
@@ -74,6 +75,11 @@ CGAL_DGG_VTP_3_NAMED_PARAMETER(target_distances)
 /// A writable vertex property map that receives, per vertex, the number of its nearest source in
 /// the range of sources (`std::size_t(-1)` where unreachable).
 CGAL_DGG_VTP_3_NAMED_PARAMETER(nearest_source_map)
+/// A writable vertex property map that receives, per vertex, a certified lower bound of its exact
+/// distance: the least key that reached it (see the manual, "Certified error"), so that the exact
+/// distance lies in [lower bound, distance], an interval of width at most epsilon x distance;
+/// equal to the distance in the exact mode, and `+infinity` where the distance is.
+CGAL_DGG_VTP_3_NAMED_PARAMETER(lower_bound_map)
 /// For `Triangle_soup_geodesic_distance_solver`: a random access range of point indices, one per
 /// point, point `i` being a copy of point `copy_of[i]` (itself if it is none) and of that one's
 /// copies. Copies are one point of the surface, split where sheets meet (as

@@ -478,6 +478,17 @@ std::vector<double> file_vertex_distances(const Loaded_soup& soup, const std::ve
   return out;
 }
 
+// Per file vertex, the certified bound on the error of its distance `d`, given a lower bound of
+// its exact distance (both as file_vertex_distances() gives them): d - lower, +infinity where d
+// is (unreached), NaN where d is (a vertex a repair removed)
+inline std::vector<double> certified_errors(const std::vector<double>& d, const std::vector<double>& lower)
+{
+  std::vector<double> out(d.size());
+  for(std::size_t i = 0; i < d.size(); ++i)
+    out[i] = std::isinf(d[i]) ? d[i] : d[i] - lower[i];
+  return out;
+}
+
 } // namespace dggvtp
 
 #endif // DGGVTP_LOAD_MESH_H

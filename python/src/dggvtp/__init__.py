@@ -40,8 +40,8 @@ def geodesic_distances(V: Any, F: Any, sources: Any = None, *, precision: str = 
 
     GeodesicSolver(V, F, precision, repair=repair, threads=threads).distances(sources, **options),
     the same values: the options are those of GeodesicSolver.distances (points, face_points,
-    epsilon, max_distance, threads, return_labels); threads serves the preparation too. For several
-    queries on one mesh, keep a GeodesicSolver: it prepares the mesh once.
+    epsilon, max_distance, threads, return_labels, return_bounds); threads serves the preparation
+    too. For several queries on one mesh, keep a GeodesicSolver: it prepares the mesh once.
     """
     threads = options.get("threads", 1)
     return GeodesicSolver(V, F, precision, repair=repair, threads=threads).distances(sources, **options)

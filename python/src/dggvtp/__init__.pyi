@@ -15,16 +15,31 @@ __all__ = ["GeodesicSolver", "InputError", "geodesic_distances", "read_mesh", "_
 def geodesic_distances(V: npt.ArrayLike, F: npt.ArrayLike, sources: _Vertices = None, *,
                        precision: str = "double", repair: bool = False,
                        points: _Points = None, face_points: _FacePoints = None, epsilon: _Real = 0.0,
-                       max_distance: _Real = ..., threads: int = 1, return_labels: Literal[False] = False) -> _Distances: ...
+                       max_distance: _Real = ..., threads: int = 1, return_labels: Literal[False] = False,
+                       return_bounds: Literal[False] = False) -> _Distances: ...
 @overload
 def geodesic_distances(V: npt.ArrayLike, F: npt.ArrayLike, sources: _Vertices = None, *,
                        precision: str = "double", repair: bool = False,
                        points: _Points = None, face_points: _FacePoints = None, epsilon: _Real = 0.0,
-                       max_distance: _Real = ..., threads: int = 1,
-                       return_labels: Literal[True]) -> Tuple[_Distances, _Labels]: ...
+                       max_distance: _Real = ..., threads: int = 1, return_labels: Literal[True],
+                       return_bounds: Literal[False] = False) -> Tuple[_Distances, _Labels]: ...
 @overload
 def geodesic_distances(V: npt.ArrayLike, F: npt.ArrayLike, sources: _Vertices = None, *,
                        precision: str = "double", repair: bool = False,
                        points: _Points = None, face_points: _FacePoints = None, epsilon: _Real = 0.0,
-                       max_distance: _Real = ..., threads: int = 1,
-                       return_labels: bool) -> Union[_Distances, Tuple[_Distances, _Labels]]: ...
+                       max_distance: _Real = ..., threads: int = 1, return_labels: Literal[False] = False,
+                       return_bounds: Literal[True]) -> Tuple[_Distances, _Distances]: ...
+@overload
+def geodesic_distances(V: npt.ArrayLike, F: npt.ArrayLike, sources: _Vertices = None, *,
+                       precision: str = "double", repair: bool = False,
+                       points: _Points = None, face_points: _FacePoints = None, epsilon: _Real = 0.0,
+                       max_distance: _Real = ..., threads: int = 1, return_labels: Literal[True],
+                       return_bounds: Literal[True]) -> Tuple[_Distances, _Labels, _Distances]: ...
+@overload
+def geodesic_distances(V: npt.ArrayLike, F: npt.ArrayLike, sources: _Vertices = None, *,
+                       precision: str = "double", repair: bool = False,
+                       points: _Points = None, face_points: _FacePoints = None, epsilon: _Real = 0.0,
+                       max_distance: _Real = ..., threads: int = 1, return_labels: bool = False,
+                       return_bounds: bool = False) -> Union[_Distances, Tuple[_Distances, _Labels],
+                                                             Tuple[_Distances, _Distances],
+                                                             Tuple[_Distances, _Labels, _Distances]]: ...

@@ -61,6 +61,7 @@ public:
     , m_keys(number<FT>(0), mesh.number_of_vertices())
     , m_reached_by_patch(mesh.number_of_vertices(), partition.size())
     , distance(mesh.number_of_vertices(), Number_type_math<FT>::infinity())
+    , least_key(mesh.number_of_vertices(), Number_type_math<FT>::infinity())
     , incoming(mesh.number_of_vertices())
     , is_source(mesh.number_of_vertices(), 0)
     , pseudo_sources(mesh, partition)
@@ -73,7 +74,7 @@ public:
   {
     for(Index v : m_reached)
     {
-      distance[v] = Number_type_math<FT>::infinity();
+      distance[v] = least_key[v] = Number_type_math<FT>::infinity();
       incoming[v] = Incoming_directions<FT>();
       is_source[v] = 0;
       if(!m_origin.empty())
@@ -98,8 +99,11 @@ public:
   const std::vector<Index>& reached() const { return m_reached; }
 
   // At the end of a propagation: lists the vertices reached, and puts those beyond `max_distance`
-  // at +infinity; returns how many are within it.
-  std::size_t finish(FT max_distance)
+  // at +infinity (their least key too: nothing is said of them); returns how many are within it.
+  // `pending`: no key the propagation left undone is below it (see early_termination.h), so that
+  // a least key above it is not final, and it is the lower bound there (+infinity: it ran to
+  // the end).
+  std::size_t finish(FT max_distance, FT pending)
   {
     m_reached.clear();
     for(std::size_t k = 0; k < m_reached_by_patch.shards(); ++k)
@@ -108,7 +112,9 @@ public:
     for(Index v : m_reached)
     {
       if(distance[v] > max_distance)
-        distance[v] = Number_type_math<FT>::infinity();
+        distance[v] = least_key[v] = Number_type_math<FT>::infinity();
+      else // in the exact mode keys are distances, which may keep a value 64 ulps above the least
+        least_key[v] = (std::min)(m_keys.is_exact() ? distance[v] : least_key[v], pending);
       within += distance[v] < Number_type_math<FT>::infinity();
     }
     return within;
@@ -121,12 +127,12 @@ public:
   {
     m_reached_by_patch.insert(s, m_partition.owner(s));
     is_source[s] = 1;
-    distance[s] = number<FT>(0);
+    distance[s] = least_key[s] = number<FT>(0);
     if(m_record_origins)
       m_origin[s] = (std::min)(m_origin[s], Index(distance.size()) + k);
   }
 
-  // Lines 23-24: a path of length `d` reaches `v`, arriving from `direction` (pointing back along
+  // Lines 23-24: a path of length `d` and key `key` reaches `v`, arriving from `direction` (pointing back along
   // the path, in the frame of `corner`, one of v's corners: position `back` at `v`), from the
   // pseudo-source `origin`. Paths that tie with the best one widen the recorded range of arrival
   // directions: the shadow of a saddle is the union of their shadows. Returns whether `v` must be
@@ -134,8 +140,9 @@ public:
   // of it (the same point, see Vertex_copies.h), at the copy's distance `d`: copies are singular,
   // so no direction is recorded, and only a shorter distance counts (a tie would go back and
   // forth between the copies).
-  bool relax(Index v, FT d, Index corner, const Point& direction, Index from)
+  bool relax(Index v, FT d, FT key, Index corner, const Point& direction, Index from)
   {
+    least_key[v] = (std::min)(least_key[v], key);
     const FT dv = distance[v];
     Incoming_directions<FT>& in = incoming[v];
     const bool shorter = d < dv - T::rounding_margin(dv) || dv == Number_type_math<FT>::infinity();
@@ -199,6 +206,10 @@ private:
 
 public:
   std::vector<FT> distance;                       // best distance found so far (+inf: not reached)
+  // The least key that reached it, whatever its distance: a lower bound of the exact distance (the
+  // manual's K(v), issue 45), equal to `distance` where the path of the least key is the true
+  // source's straight one.
+  std::vector<FT> least_key;
   std::vector<Incoming_directions<FT>> incoming;  // arrival directions of its best paths
   std::vector<char> is_source;                    // one of the sources (they emit all around)
   Pseudo_source_states<FT> pseudo_sources;        // DGG-VTP's vertices that emit all around

@@ -55,8 +55,8 @@ struct Incoming_directions
 // directions nearly straight ahead of the path that reached it, within a face or two.
 //
 // What is sent goes to `out`, the propagation on the pseudo-source's patch:
-//   out.relax(vertex, distance, corner, direction, origin)  a path reaches a vertex (see
-//                                                            Window_propagation::relax)
+//   out.relax(vertex, distance, key, corner, direction, origin)  a path reaches a vertex (see
+//                                                                 Window_propagation::relax)
 //   out.add_window(halfedge, window)                         a window enters a window list
 //   out.count_pseudo_source()                                one more pseudo-source emits
 template <class FT>
@@ -87,13 +87,13 @@ public:
       across_corner(v, dv, *c, out);
   }
 
-  // a vertex at distance `dv`: its copies (see Vertex_copies.h) are the same point, reached
-  // through it at no cost (no corner: a step of length zero)
+  // a vertex at distance `dv` and least key `key`: its copies (see Vertex_copies.h) are the same
+  // point, reached through it at no cost (no corner: a step of length zero)
   template <class Out>
-  void to_copies(Index v, FT dv, Out& out) const
+  void to_copies(Index v, FT dv, FT key, Out& out) const
   {
     for(Index u = m_mesh.next_copy(v); u != v; u = m_mesh.next_copy(u))
-      out.relax(u, dv, Mesh::no_halfedge, Point{number<FT>(0), number<FT>(0)}, v);
+      out.relax(u, dv, key, Mesh::no_halfedge, Point{number<FT>(0), number<FT>(0)}, v);
   }
 
   // Lines 11-13 of the exact algorithm: a shortest path bends at a saddle only if it turns by at
@@ -152,8 +152,10 @@ private:
     const Index across = Mesh::next(h);
     const Index prev = Mesh::prev(h);
     // from target(h) back along its corner's last edge, from source(prev) back along prev
-    out.relax(m_mesh.target(h), dv + m_mesh.length(h), across, m_mesh.apex(across), v);
-    out.relax(m_mesh.source(prev), dv + m_mesh.length(prev), prev, Point{number<FT>(1), number<FT>(0)}, v);
+    const FT key = m_keys.key(dv);
+    out.relax(m_mesh.target(h), dv + m_mesh.length(h), key + m_mesh.length(h), across, m_mesh.apex(across), v);
+    out.relax(m_mesh.source(prev), dv + m_mesh.length(prev), key + m_mesh.length(prev), prev,
+              Point{number<FT>(1), number<FT>(0)}, v);
     if(m_mesh.has_face_across(across))
       for_each_face_across(m_mesh, across, window_across_corner(m_mesh, h, dv, m_keys, v),
                            [&out](Index t, const Window<FT>& w) { out.add_window(t, w); });
@@ -172,7 +174,7 @@ private:
       const Point c = m_mesh.apex(e);
       const Point q{b[(k + 1) % 3] * m_mesh.length(e) + b[(k + 2) % 3] * c.x, b[(k + 2) % 3] * c.y};
       const FT to_source = length(q);
-      out.relax(m_mesh.source(e), to_source, e, q, origin);
+      out.relax(m_mesh.source(e), to_source, to_source, e, q, origin);
       if(b[(k + 2) % 3] != FT(0) && m_mesh.has_face_across(e)) // not on this edge
         for_each_face_across(m_mesh, e,
                              window_from_point(m_mesh, e, q, number<FT>(0), length(q - Point{m_mesh.length(e), number<FT>(0)}),

@@ -51,7 +51,8 @@ namespace internal {
 //   const std::vector<FT>& distances()
 //   bool query_is_answered(nearest) every distance the query needs is final, `nearest` being
 //                                   the nearest queued vertex of all patches
-//   FT pop_limit()                  no vertex beyond it matters to the query (+inf: every one)
+//   FT pop_limit()                  no vertex beyond it matters to the query (+inf: every one),
+//                                   as of the last query_is_answered()
 template <class FT>
 class Round_scheduler
 {
@@ -68,6 +69,7 @@ public:
   {
     Index vertex;
     FT distance;
+    FT key;
     Index corner;
     Vec2<FT> direction;
     Index origin;

@@ -124,6 +124,13 @@ public:
         *out++ = FT(dt > s.query.max_distance ? Number_type_math<Computation_FT>::infinity() : dt);
       }
     }
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::lower_bound_map_t>::value)
+    {
+      auto bounds = parameters::get_parameter(np, internal_np::lower_bound_map_t());
+      const std::vector<Computation_FT>& k = propagation.lower_bounds();
+      for(std::size_t i = 0; i < k.size(); ++i)
+        put(bounds, m_numbering.vertex(i), rounded_down(k[i]));
+    }
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value)
     {
       auto labels = parameters::get_parameter(np, internal_np::nearest_source_map_t());
@@ -153,6 +160,9 @@ public:
     static_assert(parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value,
                   "one field per source: the named parameter nearest_source_map is not taken "
                   "(the nearest source of a vertex is that of its field)");
+    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::lower_bound_map_t>::value,
+                  "one field per source: the named parameter lower_bound_map is not taken (a row "
+                  "function with a fifth parameter receives each field's lower bounds)");
     static_assert(parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value,
                   "one field per source: the named parameter callback is not taken (the fields are "
                   "handed to the caller one by one: it sees the progress, and may stop by throwing)");
@@ -179,7 +189,21 @@ public:
       const std::vector<Computation_FT>& d = lease->distances();
       const auto give = [&](const std::vector<FT>& distances) {
         if constexpr(std::is_invocable<const RowFunction&, std::size_t, const std::vector<FT>&,
-                                       const Propagation_statistics&, const std::vector<Index>&>::value)
+                                       const Propagation_statistics&, const std::vector<Index>&,
+                                       const std::vector<FT>&>::value)
+        {
+          if constexpr(std::is_same<FT, Computation_FT>::value)
+            row(k, distances, lease->statistics(), lease->reached(), lease->lower_bounds());
+          else
+          {
+            std::vector<FT> bounds(d.size());
+            for(std::size_t i = 0; i < d.size(); ++i)
+              bounds[i] = rounded_down(lease->lower_bounds()[i]);
+            row(k, distances, lease->statistics(), lease->reached(), bounds);
+          }
+        }
+        else if constexpr(std::is_invocable<const RowFunction&, std::size_t, const std::vector<FT>&,
+                                            const Propagation_statistics&, const std::vector<Index>&>::value)
           row(k, distances, lease->statistics(), lease->reached());
         else
           row(k, distances, lease->statistics());
@@ -266,6 +290,16 @@ private:
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value)
       s.query.progress = parameters::get_parameter(np, internal_np::callback);
     return s;
+  }
+
+  // a lower bound in the user's number type: a float one rounded down, never above the bound
+  static FT rounded_down(const Computation_FT& x)
+  {
+    FT y = FT(x);
+    if constexpr(!std::is_same<FT, Computation_FT>::value)
+      if(Computation_FT(y) > x)
+        y = std::nextafter(y, -std::numeric_limits<FT>::infinity());
+    return y;
   }
 
   // the shortest text that reads back as `x` (-1e-09, not std::to_string's -0.000000)

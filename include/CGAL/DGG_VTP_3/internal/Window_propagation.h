@@ -108,7 +108,7 @@ public:
       m_scheduler.wake(m_partition.owner(s));
       m_patches[m_partition.owner(s)].queue.push(Queue_entry(number<FT>(0), s));
       Emission_out out{*this, m_patches[m_partition.owner(s)]};
-      m_emission.to_copies(s, number<FT>(0), out);
+      m_emission.to_copies(s, number<FT>(0), number<FT>(0), out);
     }
     m_targets = Point_targets<FT>(m_mesh, query.point_targets);
     const auto out_in_face = [this](Index f) {
@@ -123,7 +123,7 @@ public:
     for(Index k : m_scheduler.woken())
       m_patches[k].add_statistics(m_stats);
     m_targets.finish(m_mesh, m_vertices.distance, query);
-    m_stats.vertices_reached = m_vertices.finish(query.max_distance);
+    m_stats.vertices_reached = m_vertices.finish(query.max_distance, m_pending_keys);
     m_reusable = true;
   }
 
@@ -141,13 +141,14 @@ public:
   const Point_targets<FT>& point_targets() const { return m_targets; }
 
   const std::vector<FT>& distances() const { return m_vertices.distance; }
+  // per vertex, a lower bound of its exact distance (see Propagation_vertices::finish)
+  const std::vector<FT>& lower_bounds() const { return m_vertices.least_key; }
   // the vertices that got a distance (+infinity beyond max_distance); the others are at +infinity
   const std::vector<Index>& reached() const { return m_vertices.reached(); }
   const Propagation_statistics& statistics() const { return m_stats; }
 
 private:
   using Patch = Propagation_patch<FT>;
-  using Queue = typename Patch::Queue;
   using Queue_entry = typename Patch::Queue_entry;
 
   // the state of a new propagation, in the time of what the last one touched
@@ -171,7 +172,7 @@ private:
 
   FT nearest_queued(Index k)
   {
-    Queue& queue = m_patches[k].queue;
+    auto& queue = m_patches[k].queue;
     while(!queue.empty() && queue.top().first > m_vertices.distance[queue.top().second])
       queue.pop(); // superseded by a later, shorter distance
     return queue.empty() ? infinity() : queue.top().first;
@@ -180,18 +181,17 @@ private:
   bool has_lists_to_propagate(Index k) const { return !m_patches[k].fifo.empty(); }
 
   // whether every distance the query needs is final (see early_termination.h); `nearest`: the
-  // nearest queued vertex of all patches
-  bool query_is_answered(FT nearest) const
+  // nearest queued vertex of all patches. Its limit serves the round's pop_limit() too.
+  bool query_is_answered(FT nearest)
   {
-    return nothing_pending_below(early_termination_limit(*m_query, m_targets, m_mesh, m_vertices.distance), nearest, m_keys,
-                                 m_patches, m_scheduler.woken());
+    m_limit = early_termination_limit(*m_query, m_targets, m_mesh, m_vertices.distance);
+    const bool answered = nothing_pending_below(m_limit, nearest, m_keys, m_patches, m_scheduler.woken());
+    m_pending_keys = answered ? least_key_left(m_limit, m_keys) : infinity();
+    return answered;
   }
 
   // how far the rounds need to pop for what the query asks (see pop_limit())
-  FT pop_limit() const
-  {
-    return internal::pop_limit(early_termination_limit(*m_query, m_targets, m_mesh, m_vertices.distance), m_keys);
-  }
+  FT pop_limit() const { return internal::pop_limit(m_limit, m_keys); }
 
   // lines 9-29 in one patch, for the vertices nearer than `limit`
   void run_round(Index k, FT limit)
@@ -238,7 +238,7 @@ private:
   void receive(Index k, const typename Scheduler::Window_message& m) { add_window(m_patches[k], m.halfedge, m.window); }
   void receive(Index k, const typename Scheduler::Relax_message& m)
   {
-    relax(m_patches[k], m.vertex, m.distance, m.corner, m.direction, m.origin);
+    relax(m_patches[k], m.vertex, m.distance, m.key, m.corner, m.direction, m.origin);
   }
   void receive(Index k, const typename Scheduler::Face_message& m) { enter_face(m_patches[k], m.face); }
   void receive(Index k, const typename Scheduler::Relay_message& m) { make_emitter(m_patches[k], m.vertex); }
@@ -266,15 +266,18 @@ private:
 
   // lines 23-24 (see Propagation_vertices::relax), on the patch that owns `v`, and v's copies at
   // once: windows through a copy are compared with its own key (see for_each_face_across)
-  void relax(Patch& p, Index v, FT d, Index corner, const Point& direction, Index origin)
+  void relax(Patch& p, Index v, FT d, FT key, Index corner, const Point& direction, Index origin)
   {
-    if(m_scheduler.template hand_off<typename Scheduler::Relax_message>(p.id, m_partition.owner(v), v, d, corner,
-                                                                         direction, origin) ||
-       !m_vertices.relax(v, d, corner, direction, origin))
+    if(m_scheduler.template hand_off<typename Scheduler::Relax_message>(p.id, m_partition.owner(v), v, d, key, corner,
+                                                                         direction, origin))
       return;
-    p.queue.push(Queue_entry(m_vertices.distance[v], v));
+    const bool smaller_key = key < m_vertices.least_key[v];
+    const bool queue = m_vertices.relax(v, d, key, corner, direction, origin);
+    if(queue)
+      p.queue.push(Queue_entry(m_vertices.distance[v], v));
     Emission_out out{*this, p};
-    m_emission.to_copies(v, m_vertices.distance[v], out);
+    if(queue || smaller_key)
+      m_emission.to_copies(v, m_vertices.distance[v], m_vertices.least_key[v], out);
   }
 
   // what the pseudo-sources of patch `patch` send out (see Pseudo_source_emission)
@@ -282,15 +285,12 @@ private:
   {
     Window_propagation& propagation;
     Patch& patch;
-    void relax(Index v, FT d, Index corner, const Point& direction, Index origin)
-    {
-      propagation.relax(patch, v, d, corner, direction, origin);
-    }
+    void relax(Index v, FT d, FT key, Index corner, const Point& direction, Index origin)
+    { propagation.relax(patch, v, d, key, corner, direction, origin); }
     void add_window(Index h, Win w)
     {
-      // In DGG-VTP a pseudo-source lights all its corners, and the windows it sends back towards
-      // nearer vertices are mostly beaten through the ends of their edge already: the ICH rule
-      // now (the ends' distances only decrease) spares them the window lists.
+      // In DGG-VTP a pseudo-source lights all its corners, and the windows it sends back towards nearer
+      // vertices are mostly beaten through their edge's ends already: the ICH rule now spares them the lists.
       if(propagation.is_dgg())
       {
         const End_keys ends = propagation.end_keys(patch, h);
@@ -387,7 +387,7 @@ private:
       // arrival direction at c, in the frame of c's corner prev(h), which starts along c -> a
       const Point to_a = Point{number<FT>(0), number<FT>(0)} - c;
       const Point back = best.value_window->source - c;
-      relax(p, apex_vertex, best.value, Mesh::prev(h), Point{dot(to_a, back), cross(to_a, back)},
+      relax(p, apex_vertex, best.value, best.distance, Mesh::prev(h), Point{dot(to_a, back), cross(to_a, back)},
             best.value_window->origin);
     }
 
@@ -488,6 +488,8 @@ private:
   Progress_report m_progress;         // of the query's progress callback
   Point_targets<FT> m_targets;        // the query's targets inside faces
   Propagation_statistics m_stats;
+  FT m_limit = infinity();            // the largest distance of interest (see early_termination_limit)
+  FT m_pending_keys = infinity();     // no key the run left undone is below it (+inf: none left)
   bool m_reusable = true;             // see reusable()
 };
 

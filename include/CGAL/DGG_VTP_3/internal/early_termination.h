@@ -98,6 +98,14 @@ FT pop_limit(FT limit, const Key_ratio<FT>& keys)
   return far + Tuning<FT>::rounding_margin(far);
 }
 
+// Once nothing is pending below `limit` (see nothing_pending_below()), no key left undone is below
+// this: a value v gives the key v / rho or more (see Propagation_vertices::finish)
+template <class FT>
+FT least_key_left(FT limit, const Key_ratio<FT>& keys)
+{
+  return keys.key(limit) - Tuning<FT>::rounding_margin(limit);
+}
+
 // Whether nothing pending can go below `limit` (beyond rounding), given the nearest queued key of
 // all patches and the window lists of the patches numbered `woken` (the others hold none), whose
 // windows' key ratio is `keys`.
