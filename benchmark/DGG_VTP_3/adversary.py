@@ -39,6 +39,13 @@ steadier on a shared machine). Exit status: 0 no violation, 1 a violation (or an
 2 bad input (no dggvtp-batch, a mesh that cannot be read or that the input policy refuses, a
 failed run), with an `error:` line.
 
+--bounds (issue 45) also checks the certified error of every distance: the same rows through the
+Python module (build/python: distances_from_each(return_bounds=True)), the same bits as the batch's,
+with bounds b such that
+    d - b <= exact * (1 + 1e-12)   and   0 <= b <= epsilon * d * (1 + 1e-12)
+(float: t added as above); a vertex outside is a violation, and the table gains the largest and
+the mean b / (epsilon d).
+
 Example (from the repository root, after building dggvtp-batch in build/):
   /usr/bin/python3 benchmark/DGG_VTP_3/adversary.py data/meshes/pinion.ply --epsilons 1e-1 1e-3 1e-5
   /usr/bin/python3 benchmark/DGG_VTP_3/adversary.py --mesh data/meshes/blade.ply --sample 200 --seed 1 \\
@@ -248,10 +255,11 @@ def built_at(path):
     return datetime.datetime.fromtimestamp(os.path.getmtime(path), datetime.timezone.utc).strftime('%Y-%m-%d %H:%M UTC')
 
 
-def table_header():
+def table_header(bounds=False):
     return ['| mesh | vertices | sources | precision | epsilon | max err/eps | at (source, vertex) | max rel. err '
-            '| lowest rel. err | violations | of which below | time eps/exact (wall) | (CPU) | exact rows (s) |',
-            '|---|---:|---:|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|']
+            '| lowest rel. err | violations | of which below | time eps/exact (wall) | (CPU) | exact rows (s) |'
+            + (' bound/eps: max | mean | bound violations |' if bounds else ''),
+            '|---|---:|---:|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|' + ('---:|---:|---:|' if bounds else '')]
 
 
 def table_row(r):
@@ -261,7 +269,9 @@ def table_row(r):
     at = '-' if r['max_at'] is None else f"({r['max_at'][0]}, {r['max_at'][1]})"
     return (f"| {r['mesh']} | {r['vertices']} | {r['sources']} | {r['precision']} | {eps} | {over} | {at} "
             f"| {r['max_rel']:.2e} | {r['min_rel']:.1e} | {r['violations']} | {r['below']} | {r['time_ratio']:.2f} "
-            f"| {r['cpu_ratio']:.2f} | {r['exact_seconds']:.2f} |")
+            f"| {r['cpu_ratio']:.2f} | {r['exact_seconds']:.2f} |"
+            + ('' if r.get('bound_violations') is None else
+               f" {r['bound_max_over_eps']:.3f} | {r['bound_mean_over_eps']:.3f} | {r['bound_violations']} |"))
 
 
 def symmetry_header():
@@ -272,6 +282,47 @@ def symmetry_header():
 def symmetry_row(r):
     at = '-' if r['max_at'] is None else f"({r['max_at'][0]}, {r['max_at'][1]})"
     return f"| {r['mesh']} | {r['vertices']} | {r['max_rel']:.1e} | {at} | {r['pairs']} |"
+
+
+def check_bounds(solver, rows_path, exact_path, sources, epsilon, rounding):
+    """--bounds: the rows and certified errors of the module against the batch's rows and the exact
+    rows, a block of sources at a time: (violations, largest b / (epsilon d), mean, first violations)"""
+    exact = np.load(exact_path, mmap_mode='r')
+    batch_rows = np.load(rows_path, mmap_mode='r')
+    step = max(1, BLOCK_BYTES // max(1, exact.shape[1] * 8))
+    violations, largest, total, count, examples = 0, 0., 0., 0, []
+    for first in range(0, len(sources), step):
+        block = sources[first:first + step]
+        d, b = solver.distances_from_each(block, epsilon=epsilon, return_bounds=True)
+        e = np.asarray(exact[first:first + len(block)], dtype=np.float64)
+        bad = np.asarray(batch_rows[first:first + len(block)], dtype=np.float64) != d
+        bad &= ~(np.isnan(d) & np.isnan(np.asarray(batch_rows[first:first + len(block)], dtype=np.float64)))
+        at = np.isfinite(e) & (e > 0)
+        with np.errstate(invalid='ignore'):
+            bad |= ~(np.isinf(b) == np.isinf(d))
+            bad[at] |= ~((d[at] - b[at] <= e[at] * (1 + 1e-12) * (1 + rounding)) & (b[at] >= 0)
+                         & (b[at] <= epsilon * d[at] * (1 + 1e-12) * (1 + rounding)))
+            ratio = b[at] / (epsilon * d[at])
+        violations += int(np.count_nonzero(bad))
+        for r, v in zip(*np.nonzero(bad)):
+            if len(examples) == EXAMPLES:
+                break
+            examples.append((first + int(r), int(v), float(e[r, v]), float(d[r, v]), float(b[r, v])))
+        if ratio.size:
+            largest = max(largest, float(np.nanmax(ratio)))
+            total += float(np.nansum(ratio))
+            count += ratio.size
+    return violations, largest, total / count if count else 0., examples
+
+
+def module_solver(a, mesh, precision):
+    """--bounds: a GeodesicSolver of the Python module built beside dggvtp-batch"""
+    sys.path.insert(0, os.path.join(a.build, 'python'))
+    try:
+        import dggvtp
+    except ImportError as e:
+        raise Failure(f'--bounds needs the Python module in {a.build}/python (build the target dggvtp_python): {e}')
+    return dggvtp.GeodesicSolver(*dggvtp.read_mesh(mesh), precision)
 
 
 def check_mesh(a, exe, mesh, workdir, say):
@@ -306,6 +357,11 @@ def check_mesh(a, exe, mesh, workdir, say):
         path, stats = batch.run(f'eps{epsilon:g}', epsilon, precision)
         ran = time.monotonic() - start
         tally = compare_files(exact, path, epsilon, a.budget, FLOAT_ROUNDING if precision == 'float' else 0.)
+        bounds = None
+        if a.bounds and epsilon > 0:
+            bounds = check_bounds(module_solver(a, mesh, precision), path, exact,
+                                  chosen if chosen is not None else list(range(vertices)), epsilon,
+                                  FLOAT_ROUNDING if precision == 'float' else 0.)
         os.remove(path)
         (wall, cpu), (base_wall, base_cpu) = seconds(stats), seconds(base_stats)
         if epsilon == 0:
@@ -323,7 +379,10 @@ def check_mesh(a, exe, mesh, workdir, say):
             'cpu_seconds': cpu, 'exact_cpu_seconds': base_cpu,
             'cpu_ratio': cpu / base_cpu if base_cpu else float('nan'),
             'seconds_run': ran, 'stats': stats, 'exact_stats': base_stats,
-            'source_list': chosen, 'seed': a.seed if chosen is not None else None})
+            'source_list': chosen, 'seed': a.seed if chosen is not None else None,
+            'bound_violations': bounds[0] if bounds else None, 'bound_max_over_eps': bounds[1] if bounds else None,
+            'bound_mean_over_eps': bounds[2] if bounds else None,
+            'bound_examples': [[source_of(r), v, e, d, b] for r, v, e, d, b in bounds[3]] if bounds else None})
         print(table_row(records[-1]), flush=True)
     os.remove(exact)
     return records, symmetry
@@ -367,6 +426,8 @@ def main():
     p.add_argument('--workdir', help='folder for the temporary .npy files (default: a new one in $TMPDIR)')
     p.add_argument('--markdown', metavar='FILE', help='write the table (Markdown, with date and machine) here')
     p.add_argument('--json', metavar='FILE', help='write every record (and the first violations) here')
+    p.add_argument('--bounds', action='store_true',
+                   help='check the certified error bounds too, through the Python module (see above)')
     p.add_argument('--quiet', action='store_true', help='no progress lines on stderr')
     a = p.parse_args()
     say = (lambda _: None) if a.quiet else (lambda text: print(f'adversary: {text}', file=sys.stderr, flush=True))
@@ -399,7 +460,7 @@ def main():
 
     started = datetime.datetime.now().strftime('%Y-%m-%d %H:%M')
     load_before = os.getloadavg()
-    print('\n'.join(table_header()), flush=True)
+    print('\n'.join(table_header(a.bounds)), flush=True)
     records, symmetries = [], []
     try:
         for mesh in meshes:
@@ -421,7 +482,7 @@ def main():
         print('\n' + '\n'.join(symmetry_table), flush=True)
     if a.markdown:
         with open(a.markdown, 'w') as f:
-            f.write(f'{stamp}\n\n' + '\n'.join(table_header() + [table_row(r) for r in records]) + '\n'
+            f.write(f'{stamp}\n\n' + '\n'.join(table_header(a.bounds) + [table_row(r) for r in records]) + '\n'
                     + ('\n' + '\n'.join(symmetry_table) + '\n' if symmetry_table else ''))
     if a.json:
         with open(a.json, 'w') as f:
@@ -439,7 +500,13 @@ def main():
             print(f"violation: {r['mesh']}: the exact mode is not symmetric: {r['pairs']} pairs with "
                   f"|d(s, v) - d(v, s)| above {ASYMMETRY:g} relative, at most {r['max_rel']:.3g} at (s, v) "
                   f"{tuple(r['max_at'])}", file=sys.stderr)
-    violations = sum(r['violations'] for r in records) + sum(r['pairs'] for r in symmetries)
+    for r in records:
+        if r['bound_violations']:
+            print(f"violation: {r['mesh']} ({r['precision']}) epsilon {r['epsilon']:g}: {r['bound_violations']} "
+                  f"vertices whose certified bound fails (source, vertex, exact, d, bound): "
+                  f"{r['bound_examples'][:3]}", file=sys.stderr)
+    violations = (sum(r['violations'] for r in records) + sum(r['pairs'] for r in symmetries)
+                  + sum(r['bound_violations'] or 0 for r in records))
     say(f'{len(records)} rows, {violations} violations ({stamp})')
     return 1 if violations else 0
 

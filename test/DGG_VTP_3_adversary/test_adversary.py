@@ -191,6 +191,49 @@ class Exact_symmetry(unittest.TestCase):
         self.assertEqual((found.pairs, found.max_at, found.max_rel), (1, (5, 22), np.inf))
 
 
+class Certified_bounds(unittest.TestCase):
+    """--bounds: check_bounds on fabricated rows and bounds, from a stand-in for the module's solver"""
+
+    class Solver:
+        def __init__(self, rows, bounds):
+            self.rows, self.bounds = rows, bounds
+
+        def distances_from_each(self, sources, epsilon, return_bounds):
+            return self.rows[sources], self.bounds[sources]
+
+    def check(self, rows, bounds, exact, epsilon=0.1, batch_rows=None):
+        with tempfile.TemporaryDirectory() as folder:
+            exact_path, rows_path = os.path.join(folder, 'e.npy'), os.path.join(folder, 'r.npy')
+            np.save(exact_path, exact)
+            np.save(rows_path, rows if batch_rows is None else batch_rows)
+            return adversary.check_bounds(self.Solver(rows, bounds), rows_path, exact_path,
+                                          list(range(len(rows))), epsilon, 0.)
+
+    def test_holding_and_failing_bounds(self):
+        exact = exact_rows()
+        rows = exact * 1.05
+        good = rows - exact                      # the lower bound is the exact distance
+        violations, largest, mean, _ = self.check(rows, good, exact)
+        self.assertEqual(violations, 0)
+        self.assertAlmostEqual(largest, 0.05 / 1.05 / 0.1)
+        above = good * 0.5                       # a lower bound above the exact distance
+        above[0, 1] = good[0, 1]
+        self.assertEqual(self.check(rows, above, exact)[0], rows.size - len(rows) - 1)
+        wide = good.copy()
+        wide[2, 3] = 0.2 * rows[2, 3]            # wider than epsilon d
+        self.assertEqual(self.check(rows, wide, exact)[0], 1)
+        negative = good.copy()
+        negative[1, 4] = -1e-9
+        self.assertEqual(self.check(rows, negative, exact)[0], 1)
+        finite = good.copy()
+        rows_inf = rows.copy()
+        rows_inf[3, 5] = np.inf                  # unreached: the bound must be inf too
+        self.assertEqual(self.check(rows_inf, finite, exact, batch_rows=rows_inf)[0], 1)
+        other = rows.copy()
+        other[4, 6] *= 1 + 1e-15                 # the module's rows differ from the batch's
+        self.assertEqual(self.check(other, good, exact, batch_rows=rows)[0], 1)
+
+
 class Command_line(unittest.TestCase):
     def run_script(self, *args):
         return subprocess.run([sys.executable, SCRIPT, *args], capture_output=True, text=True)

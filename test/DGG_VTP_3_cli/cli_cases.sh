@@ -24,8 +24,8 @@ run() {
   local args=("$@") outputs=() mesh="" i nan_allowed=false
   for ((i = 0; i < ${#args[@]}; ++i)); do
     case ${args[i]} in
-      --output|-o|--stats|--labels|--paths|--isolines-output) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
-      --output=*|--stats=*|--labels=*|--paths=*|--isolines-output=*) outputs+=("${args[i]#*=}") ;;
+      --output|-o|--stats|--labels|--paths|--isolines-output|--error-bounds) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
+      --output=*|--stats=*|--labels=*|--paths=*|--isolines-output=*|--error-bounds=*) outputs+=("${args[i]#*=}") ;;
       --source|-s|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads|--isolines|--isolines-at) i=$((i + 1)) ;;
       --source-point|--target-point|--path-to-point) i=$((i + 3)) ;;
       --repair) nan_allowed=true ;;   # a vertex the repairs removed is nan: the cases check which
@@ -1042,6 +1042,36 @@ TABLE
     done
     run "$data/quad.off" --quiet --source-point 0.25 0.5 3 --output "$work/d.txt"; expect_rc 0
     [ -z "$err" ] || fail "--quiet, yet: $err" ;;
+  error_bounds)  # issue 45: per vertex distance - a lower bound of the exact distance, as --output writes
+    run "$spot" --quiet --source 3 --epsilon 1e-2 --output "$work/d.txt" --error-bounds "$work/b.txt" --stats "$work/s.json"; expect_rc 0
+    [ "$(wc -l < "$work/b.txt")" -eq 2930 ] || fail "not one bound per vertex"
+    [ "$(line 4 "$work/b.txt")" = 0 ] || fail "the source's bound is $(line 4 "$work/b.txt")"
+    paste "$work/d.txt" "$work/b.txt" | awk '{ if ($2 < 0 || $2 > 1e-2 * $1 * (1 + 1e-12)) bad++; if ($2 == 0) zero++ }
+      END { exit !(bad == 0 && zero >= 1 && zero < NR) }' || fail "bounds outside [0, epsilon d], or all or none 0"
+    grep -q '"error_bounds": {"max_over_epsilon_distance": 0\.9[0-9]*, "mean_over_epsilon_distance": 0\.[0-9]*, "certified_exact": 0\.0[0-9]*}' "$work/s.json" ||
+      fail "--stats error_bounds: $(grep -o '"error_bounds.*' "$work/s.json")"
+    run "$spot" --source 3 --epsilon 1e-2 --error-bounds "$work/b2.txt"; expect_rc 0
+    [[ "$out" == *"certified exact: "*"% of the vertices reached, error bound at most 0.9"* ]] || fail "summary: $out"
+    cmp -s "$work/b.txt" "$work/b2.txt" || fail "the bounds changed without --output"
+    run "$spot" --quiet --source 3 --error-bounds "$work/b0.txt"; expect_rc 0
+    [ "$(sort -u "$work/b0.txt")" = 0 ] || fail "the exact mode certifies every distance exact"
+    run "$spot" --quiet --source 3 --epsilon 1e-2 --output-format npy --error-bounds "$work/b.npy"; expect_rc 0
+    check_npy "$work/b.npy" '<f8' 2930
+    od -An -v -tx8 -j "$npy_data" "$work/b.npy" | tr -s ' \n' '\n' | sed '/^$/d' > "$meta/npy_bits"
+    /usr/bin/python3 -c 'import struct, sys; [print(struct.pack("<d", float(x))[::-1].hex()) for x in open(sys.argv[1]).read().split()]' \
+      "$work/b.txt" > "$meta/text_bits"
+    cmp -s "$meta/npy_bits" "$meta/text_bits" || fail "npy bounds differ from the text output"
+    check_field() { FIELD_NAME=error_bound /usr/bin/python3 "$(dirname "$0")/field_files.py" "$@" || fail "field file $2: see above"; }
+    run "$spot" --quiet --source 3 --epsilon 1e-2 --error-bounds "$work/b.ply" --output "$work/d.vtk"; expect_rc 0
+    check_field ply "$work/b.ply" "$spot" "$work/b.txt"
+    run "$spot" --quiet --source 3 --epsilon 1e-2 --error-bounds "$work/b.vtk"; expect_rc 0
+    check_field vtk "$work/b.vtk" "$spot" "$work/b.txt"
+    run "$data/two_components_and_isolated_vertex.off" --quiet --epsilon 0.5 --error-bounds "$work/u.txt"; expect_rc 0
+    [ "$(tr '\n' ' ' < "$work/u.txt")" = "0 0 0 inf inf inf inf " ] || fail "unreached: $(tr '\n' ' ' < "$work/u.txt")"
+    run "$spot" --source 3 --target 9 --error-bounds "$work/t.txt"; expect_usage_error
+    [[ "$err" == *"--error-bounds need another run"* ]] || fail "stderr: $err"
+    run "$spot" --source 3 --output - --error-bounds -; expect_usage_error
+    run "$spot" --source 3 --error-bounds ""; expect_usage_error ;;
   field_files_ply_vtk)  # issue 30: the mesh with the field, for MeshLab and ParaView
     check_field() { /usr/bin/python3 "$(dirname "$0")/field_files.py" "$@" || fail "field file $2: see above"; }
     run "$spot" --quiet --source 3 --source 900 --output "$work/d.txt" --labels "$work/l.txt"; expect_rc 0

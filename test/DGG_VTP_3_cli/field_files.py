@@ -3,8 +3,10 @@
 # output of the same run: the header, the counts, the points, the faces (each the same cycle as
 # the mesh file's), and the values bit for bit.
 # usage: field_files.py ply|vtk FIELD MESH.ply DISTANCES.txt [LABELS.txt]
+# With the environment variable FIELD_NAME (error_bound for --error-bounds), the values' name.
 # Standard library only: the test must not depend on NumPy.
 import math
+import os
 import struct
 import sys
 
@@ -121,6 +123,7 @@ def bits(x):
 
 def main():
     kind, field, mesh_path, distances_path = sys.argv[1:5]
+    name = os.environ.get('FIELD_NAME', 'distance')
     distances = [float(x) for x in open(distances_path).read().split()]
     labels = [int(x) for x in open(sys.argv[5]).read().split()] if len(sys.argv) > 5 else None
     _, mesh = read_ply(mesh_path)
@@ -132,7 +135,7 @@ def main():
         header, elements = read_ply(field)
         expected = ['ply', 'format binary_little_endian 1.0', header[2],
                     'element vertex %d' % len(mesh_points), 'property float x', 'property float y',
-                    'property float z', 'property float quality', 'property double distance'] + \
+                    'property float z', 'property float quality', 'property double ' + name] + \
                    (['property int label'] if labels else []) + \
                    ['element face %d' % len(mesh_faces), 'property list uchar int vertex_indices', 'end_header']
         if header != expected or not header[2].startswith('comment '):
@@ -152,9 +155,9 @@ def main():
             fail('PLY points differ from the mesh file')
     else:
         points, faces, scalars = read_vtk(field)
-        if list(scalars) != ['distance'] + (['label'] if labels else []):
+        if list(scalars) != [name] + (['label'] if labels else []):
             fail('VTK scalars: %s' % list(scalars))
-        if scalars['distance'][0] != 'double' or [bits(x) for x in scalars['distance'][1]] != [bits(d) for d in distances]:
+        if scalars[name][0] != 'double' or [bits(x) for x in scalars[name][1]] != [bits(d) for d in distances]:
             fail('VTK distances differ from the text output')
         if labels and (scalars['label'][0] != 'int' or list(scalars['label'][1]) != labels):
             fail('VTK labels differ from the text output')

@@ -214,6 +214,15 @@ public:
    *     \cgalParamType{an output iterator accepting `FT`}
    *     \cgalParamDefault{none}
    *   \cgalParamNEnd
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::lower_bound_map}
+   *     \cgalParamDescription{receives, per vertex, a certified lower bound of its exact distance
+   *                           (the least key that reached it, see the manual's "Certified error"):
+   *                           the exact distance is in [lower bound, distance], an interval of width
+   *                           at most accuracy x distance; the distance itself in the exact mode,
+   *                           `+infinity` where the distance is}
+   *     \cgalParamType{a writable vertex property map with value type `FT`}
+   *     \cgalParamDefault{none}
+   *   \cgalParamNEnd
    *   \cgalParamNBegin{DGG_VTP_3::parameters::nearest_source_map}
    *     \cgalParamDescription{receives, per vertex, the number of its nearest source in the order
    *                           of the sources (`std::size_t(-1)` where unreachable)}
@@ -284,7 +293,8 @@ public:
    * \param np `accuracy` and `DGG_VTP_3::parameters::max_distance`, as for `compute_distances()`,
    *        applied to every propagation. The named parameters whose outputs are per query
    *        (`DGG_VTP_3::parameters::targets`, `DGG_VTP_3::parameters::target_distances`,
-   *        `DGG_VTP_3::parameters::nearest_source_map`, `callback`) are refused at compile time:
+   *        `DGG_VTP_3::parameters::nearest_source_map`, `DGG_VTP_3::parameters::lower_bound_map`,
+   *        `callback`) are refused at compile time:
    *        one output would have to serve every source (and the nearest of one source is that
    *        source).
    * \returns what each propagation did, in the order of `sources`
@@ -317,7 +327,11 @@ public:
    *         const Propagation_statistics& statistics)`: `k` is the number of the set in
    *         `source_sets`, `distances[i]` the distance of the vertex of index `i` (by the vertex
    *         index map; `+infinity` if unreachable), valid during the call only. With `Parallel_tag`
-   *         it is called from several threads at once, the sets in no particular order.
+   *         it is called from several threads at once, the sets in no particular order. A callable
+   *         of five parameters, `row(k, distances, statistics, reached, lower_bounds)`, also
+   *         receives the indices of the vertices the propagation reached (`const std::vector<std::uint32_t>&`:
+   *         every other is at `+infinity`) and, per vertex, the lower bounds of
+   *         `DGG_VTP_3::parameters::lower_bound_map` (`const std::vector<FT>&`).
    * \param np as for `compute_distances_from_each_source()`
    * \throws std::invalid_argument before any propagation if an element of a set is not a vertex
    *         of the mesh, if a set is empty, if the accuracy is not in [0, 1], or if the
