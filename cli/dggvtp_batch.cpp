@@ -62,6 +62,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <deque>
 #include <exception>
 #include <fstream>
 #include <functional>
@@ -99,6 +100,12 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
                          farthest), sequential: rank 0 computes every row
   --output OUT.npy       the .npy file (C order, shape (sources, vertices)); it appears only
                          when every row is in it
+  --error-bounds B.npy   a second .npy of the same shape and dtype: per row and vertex a certified
+                         bound b on the error of the distance d (the exact distance is in
+                         [d - b, d], b <= epsilon d; 0 at the source and in the exact mode; inf
+                         where unreachable): the values of `dggvtp --source N --error-bounds`;
+                         checkpointed and resumed with the rows, renamed into place with them;
+                         in float32 rounded as the distances are (not with --max-distance)
   --dtype D              float64 (default) or float32: the element type of the .npy
   --max-distance D       a local distance matrix: only the distances up to D >= 0 (finite), into
                          --output OUT.npz, a sparse matrix (CSR) as scipy.sparse.save_npz writes
@@ -166,6 +173,7 @@ struct Options : dggvtp::Propagation_options
   std::string mesh;
   std::string sources;          // FILE, all or fps:K
   std::string output;           // the .npy file
+  std::string error_bounds;     // optional: the .npy of the certified error bounds, row by row
   std::string checkpoint;       // default output + ".checkpoint"
   bool checkpoint_given = false;
   std::string sources_output;   // optional
@@ -193,7 +201,7 @@ struct Options : dggvtp::Propagation_options
 Options parse_options(int argc, char** argv)
 {
   Options options;
-  dggvtp::Single_value_options single_value{"--sources", "--output", "--checkpoint", "--sources-output", "--stats",
+  dggvtp::Single_value_options single_value{"--sources", "--output", "--checkpoint", "--sources-output", "--stats", "--error-bounds",
                                             "--dtype", "--epsilon", "--precision", "--threads", "--max-distance"};
   dggvtp::Argument_reader words(argc, argv, {{"-h", "--help"}, {"-o", "--output"}, {"-s", "--sources"}}, usage_text);
   while(words.next())
@@ -223,6 +231,8 @@ Options parse_options(int argc, char** argv)
       options.output = name();
     else if(arg == "--checkpoint")
       options.checkpoint = name();
+    else if(arg == "--error-bounds")
+      options.error_bounds = name();
     else if(arg == "--sources-output")
       options.sources_output = name();
     else if(arg == "--stats")
@@ -283,7 +293,11 @@ Options parse_options(int argc, char** argv)
                         "computed, are held in memory and written at the end (a killed run starts over)");
     if(options.sources.compare(0, 4, "fps:") == 0)
       throw Usage_error("fps:K chooses each source from whole rows: it does not combine with --max-distance");
+    if(!options.error_bounds.empty())
+      throw Usage_error("--error-bounds writes dense rows: it does not combine with --max-distance");
   }
+  if(options.error_bounds == "-" || options.error_bounds == options.output)
+    throw Usage_error("--error-bounds must be a file other than --output (rows are written at their offsets)");
   if(!options.checkpoint_given)
     options.checkpoint = options.output + ".checkpoint";
   return options;
@@ -298,6 +312,8 @@ void check_outputs(const Options& options)
     throw Input_error("cannot write --output '" + options.output + "': it exists and is not a regular file (the " +
                       "output is renamed into place)");
   dggvtp::check_writable("--output '" + options.output + "'", options.output);
+  if(!options.error_bounds.empty())
+    dggvtp::check_writable("--error-bounds '" + options.error_bounds + "'", options.error_bounds);
   if(!options.sources_output.empty())
     dggvtp::check_writable("--sources-output '" + options.sources_output + "'", options.sources_output);
   if(!options.stats.empty())
@@ -453,7 +469,7 @@ std::string fingerprint_of(const Options& options, const Sources& sources, std::
          "epsilon " + epsilon + "\n"
          "precision " + options.precision + "\n"
          "dtype " + (options.dtype == Npy_dtype::float32 ? "float32" : "float64") + "\n"
-         "sources " + sources.identity + "\n";
+         "sources " + sources.identity + "\n" + (options.error_bounds.empty() ? "" : "error_bounds yes\n");
 }
 
 std::map<std::string, std::string> fingerprint_fields(const std::string& text)
@@ -548,13 +564,19 @@ struct Checkpoint
 {
   std::string directory;
   std::string data() const { return directory + "/rows.npy"; }  // the output being filled
+  std::string bounds() const { return directory + "/bounds.npy"; } // and --error-bounds'
+  // the files filled row by row: the output's, and the bounds' with --error-bounds
+  std::vector<std::string> row_files(bool bounds) const
+  {
+    return bounds ? std::vector<std::string>{data(), this->bounds()} : std::vector<std::string>{data()};
+  }
   std::string fingerprint() const { return directory + "/fingerprint"; }
   std::string fps_state() const { return directory + "/fps_state"; }
   std::string record(int rank) const { return directory + "/done." + std::to_string(rank); }
   // the names a checkpoint directory holds (and temporary files of them)
   static bool is_own_name(const std::string& name)
   {
-    for(const char* prefix : {"rows.npy", "fingerprint", "fps_state", "done."})
+    for(const char* prefix : {"rows.npy", "bounds.npy", "fingerprint", "fps_state", "done."})
       if(name.compare(0, std::strlen(prefix), prefix) == 0)
         return true;
     return false;
@@ -581,6 +603,8 @@ void check_room_for_output(const Options& options, const Checkpoint& checkpoint,
   std::uint64_t written = 0;
   if(exists && ::stat(checkpoint.data().c_str(), &info) == 0)
     written = (std::min)(file_size, std::uint64_t(info.st_blocks) * 512);
+  if(!options.error_bounds.empty()) // and as much for the bounds, beside it
+    file_size *= 2;
   const std::string output = "--output '" + options.output + "' (" + std::to_string(rows) + " rows x " +
                              std::to_string(columns) + " columns x " + std::to_string(dggvtp::npy_item_size(options.dtype)) +
                              " bytes, and its header)";
@@ -596,7 +620,7 @@ void check_room_for_output(const Options& options, const Checkpoint& checkpoint,
 
 // Rank 0: opens the checkpoint, or creates it. Returns the done rows.
 Resume open_checkpoint(const Checkpoint& checkpoint, const std::string& fingerprint, const std::string& header,
-                       std::uint64_t file_size, const Sources& sources, std::size_t file_vertices)
+                       std::uint64_t file_size, const Sources& sources, std::size_t file_vertices, bool bounds)
 {
   Resume resume;
   resume.done.assign(sources.rows, 0);
@@ -614,12 +638,17 @@ Resume open_checkpoint(const Checkpoint& checkpoint, const std::string& fingerpr
         throw Input_error("the checkpoint '" + checkpoint.directory + "' belongs to another command (" +
                           fingerprint_differences(recorded, fingerprint) +
                           "): run that command again to finish it, or delete the directory to start over");
-      struct stat data;
-      std::string start;
-      std::ifstream in(checkpoint.data(), std::ios::binary);
-      start.resize(header.size());
-      if(::stat(checkpoint.data().c_str(), &data) != 0 || std::uint64_t(data.st_size) != file_size ||
-         !in.read(&start[0], std::streamsize(start.size())) || start != header)
+      bool intact = true;
+      for(const std::string& path : checkpoint.row_files(bounds))
+      {
+        struct stat data;
+        std::string start;
+        std::ifstream in(path, std::ios::binary);
+        start.resize(header.size());
+        intact = intact && ::stat(path.c_str(), &data) == 0 && std::uint64_t(data.st_size) == file_size &&
+                 in.read(&start[0], std::streamsize(start.size())) && start == header;
+      }
+      if(!intact)
         resume.notes.push_back("the checkpoint's copy of the output is missing or damaged: starting over");
       else
       {
@@ -661,28 +690,35 @@ Resume open_checkpoint(const Checkpoint& checkpoint, const std::string& fingerpr
         std::remove((checkpoint.directory + "/" + name).c_str());
     resume.done.assign(sources.rows, 0);
     resume.fps = Fps_state();
-    // the data file: the header, then zeros (a sparse file) where the rows will go
-    dggvtp::write_file_atomically(checkpoint.data(), header);
-    if(::truncate(checkpoint.data().c_str(), off_t(file_size)) != 0)
-      throw Input_error("cannot make '" + checkpoint.data() + "' " + std::to_string(file_size) +
-                        " bytes long: " + std::strerror(errno));
+    // the data files: the header, then zeros (a sparse file) where the rows will go
+    for(const std::string& path : checkpoint.row_files(bounds))
+    {
+      dggvtp::write_file_atomically(path, header);
+      if(::truncate(path.c_str(), off_t(file_size)) != 0)
+        throw Input_error("cannot make '" + path + "' " + std::to_string(file_size) + " bytes long: " + std::strerror(errno));
+    }
     dggvtp::write_file_atomically(checkpoint.fingerprint(), fingerprint);
   }
   return resume;
 }
 
-// Rank 0, every row done: the checkpoint's data file becomes the output, the checkpoint goes.
-void finish_checkpoint(const Checkpoint& checkpoint, const std::string& output)
+// Rank 0, every row done: the checkpoint's data files become the outputs (`bounds`: the
+// --error-bounds file, or empty), the checkpoint goes.
+void finish_checkpoint(const Checkpoint& checkpoint, const std::string& output, const std::string& bounds)
 {
-  if(std::rename(checkpoint.data().c_str(), output.c_str()) != 0)
+  const std::vector<std::string> from = checkpoint.row_files(!bounds.empty());
+  for(std::size_t k = 0; k < from.size(); ++k)
   {
+    const std::string& to = k == 0 ? output : bounds;
+    if(std::rename(from[k].c_str(), to.c_str()) == 0)
+      continue;
     if(errno != EXDEV)
-      throw Input_error("cannot write '" + output + "': " + std::strerror(errno));
+      throw Input_error("cannot write '" + to + "': " + std::strerror(errno));
     // another file system: copied beside the output, then renamed
     std::string bytes;
-    if(!read_whole_file(checkpoint.data(), bytes))
-      throw Input_error("cannot read '" + checkpoint.data() + "'");
-    dggvtp::write_file_atomically(output, bytes);
+    if(!read_whole_file(from[k], bytes))
+      throw Input_error("cannot read '" + from[k] + "'");
+    dggvtp::write_file_atomically(to, bytes);
   }
   std::remove(checkpoint.fingerprint().c_str());
   for(const std::string& name : dggvtp::directory_entries(checkpoint.directory))
@@ -695,9 +731,15 @@ void finish_checkpoint(const Checkpoint& checkpoint, const std::string& output)
 // Rows
 // =============================================================================================
 
-// computes the row of one source: the file vertices' distances, as dggvtp prints them; with
-// `parallel`, the propagation runs on the threads (same bits)
-using Row_function = std::function<std::vector<double>(std::size_t file_vertex, bool parallel)>;
+// a row: the file vertices' distances, as dggvtp prints them, and with --error-bounds their
+// certified error bounds, as dggvtp --error-bounds prints them (else empty)
+struct Row_values
+{
+  std::vector<double> distances, bounds;
+};
+
+// computes the row of one source; with `parallel`, the propagation runs on the threads (same bits)
+using Row_function = std::function<Row_values(std::size_t file_vertex, bool parallel)>;
 // computes the rows of several sources, each one sequential propagation, on `threads` threads (0 =
 // all cores), and hands each to `done` (from any thread) with its number in `file_vertices`
 template <class Row>
@@ -707,16 +749,18 @@ using Rows_function =
 struct Prepared
 {
   Row_function row;
-  Rows_function<std::vector<double>> rows;
+  Rows_function<Row_values> rows;
   Rows_function<dggvtp::Sparse_row> local_rows; // --max-distance: the vertices within it, in the time of those
   std::size_t faces = 0;
   double seconds_make_mesh = 0., seconds_prepare = 0.; // the input policy's repairs, the rest
   std::size_t threads = 1; // that prepare the solver, and that --threads gives the rows
 };
 
-// the solver prepared on `threads` threads (0 = all cores), the same bits for any number
+// the solver prepared on `threads` threads (0 = all cores), the same bits for any number; rows with
+// their error bounds if `bounds`
 template <class Kernel>
-Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, double max_distance, long threads)
+Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, double max_distance, long threads,
+                 bool bounds)
 {
   using Solver = CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Kernel>;
   Prepared prepared;
@@ -737,16 +781,31 @@ Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, doub
   prepared.faces = soup->triangles.size();
   dggvtp::release_soup(*soup); // keeps file_vertex_of
   const auto np = CGAL::DGG_VTP_3::parameters::max_distance(max_distance).accuracy(epsilon);
-  prepared.row = [soup, solver, np](std::size_t file_vertex, bool parallel) {
-    std::vector<typename Solver::FT> d((*solver)->number_of_vertices());
+  using FT = typename Solver::FT;
+  // per file vertex: the distances `d` and, given the lower bounds `lower` (per solver vertex), the bounds
+  const auto values = [soup](const std::vector<FT>& d, const std::vector<FT>* lower) {
+    Row_values r{dggvtp::file_vertex_distances(*soup, d), {}};
+    if(lower)
+      r.bounds = dggvtp::certified_errors(r.distances, dggvtp::file_vertex_distances(*soup, *lower));
+    return r;
+  };
+  prepared.row = [soup, solver, np, bounds, values](std::size_t file_vertex, bool parallel) {
+    std::vector<FT> d((*solver)->number_of_vertices()), lower(bounds ? d.size() : 0);
     const auto sources = dggvtp::solver_vertices_of(*soup, file_vertex);
+    const auto run = [&](auto tag) {
+      using Tag = decltype(tag);
+      if(bounds)
+        (*solver)->template compute_distances_to_nearest_source<Tag>(
+          sources, CGAL::make_property_map(d),
+          CGAL::DGG_VTP_3::parameters::lower_bound_map(CGAL::make_property_map(lower), np));
+      else
+        (*solver)->template compute_distances_to_nearest_source<Tag>(sources, CGAL::make_property_map(d), np);
+    };
     if(parallel)
-      (*solver)->template compute_distances_to_nearest_source<CGAL::Parallel_if_available_tag>(
-        sources, CGAL::make_property_map(d), np);
+      run(CGAL::Parallel_if_available_tag());
     else
-      (*solver)->template compute_distances_to_nearest_source<CGAL::Sequential_tag>(
-        sources, CGAL::make_property_map(d), np);
-    return dggvtp::file_vertex_distances(*soup, d);
+      run(CGAL::Sequential_tag());
+    return values(d, bounds ? &lower : nullptr);
   };
   // the rows of `file_vertices`, each handed to `row` as the library gives it
   const auto each_row = [soup, solver, np](const std::vector<std::size_t>& file_vertices, long threads, const auto& row) {
@@ -765,16 +824,21 @@ Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, doub
 #endif
     (*solver)->template compute_distances_from_each_source_set<CGAL::Sequential_tag>(sets, row, np);
   };
-  prepared.rows = [soup, each_row](const std::vector<std::size_t>& file_vertices, long threads,
-                                   const std::function<void(std::size_t, std::vector<double>&&)>& done) {
-    each_row(file_vertices, threads, [&](std::size_t k, const std::vector<typename Solver::FT>& d,
-                                         const CGAL::DGG_VTP_3::Propagation_statistics&) {
-      done(k, dggvtp::file_vertex_distances(*soup, d));
-    });
+  prepared.rows = [each_row, bounds, values](const std::vector<std::size_t>& file_vertices, long threads,
+                                             const std::function<void(std::size_t, Row_values&&)>& done) {
+    if(bounds)
+      each_row(file_vertices, threads, [&](std::size_t k, const std::vector<FT>& d,
+                                           const CGAL::DGG_VTP_3::Propagation_statistics&, const auto&,
+                                           const std::vector<FT>& lower) { done(k, values(d, &lower)); });
+    else
+      each_row(file_vertices, threads, [&](std::size_t k, const std::vector<FT>& d,
+                                           const CGAL::DGG_VTP_3::Propagation_statistics&) {
+        done(k, values(d, nullptr));
+      });
   };
   prepared.local_rows = [soup, each_row](const std::vector<std::size_t>& file_vertices, long threads,
                                          const std::function<void(std::size_t, dggvtp::Sparse_row&&)>& done) {
-    each_row(file_vertices, threads, [&](std::size_t k, const std::vector<typename Solver::FT>& d,
+    each_row(file_vertices, threads, [&](std::size_t k, const std::vector<FT>& d,
                                          const CGAL::DGG_VTP_3::Propagation_statistics&, const auto& reached) {
       dggvtp::Sparse_row row;
       dggvtp::sparse_row(*soup, d, reached, nullptr, row);
@@ -810,23 +874,28 @@ std::size_t rows_before_test_kill(int rank)
   return parse_number<std::size_t>("DGGVTP_BATCH_TEST_KILL_AFTER_ROWS", rows);
 }
 
-// Writes rows at their offsets; every `interval` at most (and at the end) makes what was written
-// durable and only then reports those rows as done (`on_durable`: the record). A kill loses at
+// Writes rows at their offsets, into each of the files at `paths` (the rows, and their bounds with
+// --error-bounds); every `interval` at most (and at the end) makes what was written durable in
+// all of them and only then reports those rows as done (`on_durable`: the record). A kill loses at
 // most the rows of the last interval. Safe to call from several threads. With `kill_after` = K > 0
 // (tests only), the process kills itself once its first K rows are durable and reported.
 class Row_sink
 {
 public:
-  Row_sink(dggvtp::Row_file& file, std::uint64_t header_size, std::uint64_t row_size, double interval,
-           std::function<void(const std::vector<std::size_t>&)> on_durable, std::size_t kill_after)
-    : m_file(file), m_header_size(header_size), m_row_size(row_size), m_interval(interval),
+  Row_sink(const std::vector<std::string>& paths, bool use_mpi, std::uint64_t header_size, std::uint64_t row_size,
+           double interval, std::function<void(const std::vector<std::size_t>&)> on_durable, std::size_t kill_after)
+    : m_header_size(header_size), m_row_size(row_size), m_interval(interval),
       m_on_durable(std::move(on_durable)), m_kill_after(kill_after), m_last_sync(Clock::now())
   {
+    for(const std::string& path : paths)
+      m_files.emplace_back(path, use_mpi);
   }
-  void write(std::size_t row, const std::vector<char>& bytes)
+  // `bytes`: the row's bytes for each file, in the order of the paths
+  void write(std::size_t row, const std::vector<std::vector<char>>& bytes)
   {
     std::lock_guard<std::mutex> lock(m_mutex);
-    m_file.write_at(m_header_size + std::uint64_t(row) * m_row_size, bytes.data(), bytes.size());
+    for(std::size_t k = 0; k < m_files.size(); ++k)
+      m_files[k].write_at(m_header_size + std::uint64_t(row) * m_row_size, bytes[k].data(), bytes[k].size());
     m_pending.push_back(row);
     if(++m_written == m_kill_after)
     {
@@ -847,7 +916,8 @@ private:
   {
     if(!m_pending.empty())
     {
-      m_file.sync();
+      for(dggvtp::Row_file& file : m_files)
+        file.sync();
       m_on_durable(m_pending);
       m_pending.clear();
     }
@@ -855,7 +925,7 @@ private:
   }
 
   std::mutex m_mutex;
-  dggvtp::Row_file& m_file;
+  std::deque<dggvtp::Row_file> m_files;    // a deque: a file never moves
   std::uint64_t m_header_size, m_row_size; // bytes
   double m_interval;                       // seconds between two syncs at most
   std::function<void(const std::vector<std::size_t>&)> m_on_durable;
@@ -1040,9 +1110,10 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     // one thread per process where MPI allows no threads, as for the rows
     const long threads = comm.allows_threads() ? options.threads : 1;
     one.prepared = options.precision == "float"
-                     ? prepare<CGAL::Simple_cartesian<float>>(one.soup, options.epsilon, options.max_distance, threads)
-                     : prepare<CGAL::Exact_predicates_inexact_constructions_kernel>(one.soup, options.epsilon,
-                                                                                    options.max_distance, threads);
+                     ? prepare<CGAL::Simple_cartesian<float>>(one.soup, options.epsilon, options.max_distance, threads,
+                                                              !options.error_bounds.empty())
+                     : prepare<CGAL::Exact_predicates_inexact_constructions_kernel>(
+                         one.soup, options.epsilon, options.max_distance, threads, !options.error_bounds.empty());
     one.repairs = one.soup->repairs;
     one.seconds_repair = one.prepared.seconds_make_mesh;
   });
@@ -1086,7 +1157,8 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     const std::string fingerprint = fingerprint_of(options, sources, one.file_vertices);
     check_room_for_output(options, checkpoint, sources.rows, one.file_vertices, file_size);
     in_checkpoint(options, [&] {
-      resume = open_checkpoint(checkpoint, fingerprint, header, file_size, sources, one.file_vertices);
+      resume = open_checkpoint(checkpoint, fingerprint, header, file_size, sources, one.file_vertices,
+                               !options.error_bounds.empty());
     });
   });
   if(status != 0)
@@ -1142,12 +1214,11 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
           state.nearest.assign(one.file_vertices, std::numeric_limits<double>::infinity());
         for(std::size_t v : state.chosen)
           chosen[v] = 1;
-        dggvtp::Row_file file(checkpoint.data(), comm.uses_mpi());
         // the state is saved after the rows it accounts for are durable: here, the copy taken
         // when those rows were written
         Fps_state durable_state;
         Row_sink sink(
-          file, header.size(), row_size, 1.0,
+          checkpoint.row_files(!options.error_bounds.empty()), comm.uses_mpi(), header.size(), row_size, 1.0,
           [&](const std::vector<std::size_t>& rows) {
             dggvtp::write_file_atomically(checkpoint.fps_state(), durable_state.bytes());
             durable += rows.size();
@@ -1156,25 +1227,27 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
         std::optional<Progress> progress;
         if(show_progress)
           progress.emplace([&] { return durable.load(); }, sources.rows, already_done);
-        std::vector<char> bytes;
+        std::vector<std::vector<char>> bytes(2);
         for(std::size_t r = state.chosen.size(); r < sources.rows; ++r)
         {
           const std::size_t v = r == 0 ? 0 : farthest_vertex(state.nearest, chosen);
-          std::vector<double> row;
+          Row_values values;
           {
 #ifdef CGAL_LINKED_WITH_TBB
             std::optional<tbb::global_control> limit;
             if(threads > 0)
               limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
 #endif
-            row = one.prepared.row(v, threads != 1);
+            values = one.prepared.row(v, threads != 1);
           }
+          const std::vector<double>& row = values.distances;
           unreachable.add(row.begin(), row.end());
           chosen[v] = 1;
           state.chosen.push_back(v);
           for(std::size_t i = 0; i < row.size(); ++i)
             state.nearest[i] = (std::min)(state.nearest[i], row[i]);
-          encode_row(row, options.dtype, bytes);
+          encode_row(row, options.dtype, bytes[0]);
+          encode_row(values.bounds, options.dtype, bytes[1]);
           durable_state = state;
           sink.write(r, bytes);
           ++computed;
@@ -1199,9 +1272,8 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
       for(std::size_t r = 0, i = 0; r < sources.rows; ++r)
         if(!resume.done[r] && i++ % std::size_t(comm.size()) == std::size_t(comm.rank()))
           mine.push_back(r);
-      dggvtp::Row_file file(checkpoint.data(), comm.uses_mpi());
       dggvtp::Record_file record(checkpoint.record(comm.rank()));
-      Row_sink sink(file, header.size(), row_size, 1.0,
+      Row_sink sink(checkpoint.row_files(!options.error_bounds.empty()), comm.uses_mpi(), header.size(), row_size, 1.0,
                     [&](const std::vector<std::size_t>& rows) { record.append(rows); }, kill_after);
       std::optional<Progress> progress;
       if(show_progress)
@@ -1218,10 +1290,11 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
       std::vector<std::size_t> file_vertices;
       for(std::size_t r : mine)
         file_vertices.push_back(sources.vertices[r]);
-      one.prepared.rows(file_vertices, threads, [&](std::size_t i, const std::vector<double>& row) {
-        thread_local std::vector<char> bytes;
-        unreachable.add(row.begin(), row.end());
-        encode_row(row, options.dtype, bytes);
+      one.prepared.rows(file_vertices, threads, [&](std::size_t i, Row_values&& values) {
+        thread_local std::vector<std::vector<char>> bytes(2);
+        unreachable.add(values.distances.begin(), values.distances.end());
+        encode_row(values.distances, options.dtype, bytes[0]);
+        encode_row(values.bounds, options.dtype, bytes[1]);
         sink.write(mine[i], bytes);
       });
       sink.flush();
@@ -1269,7 +1342,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
                               checkpoint.directory + "' was changed meanwhile?)");
       });
     if(!options.local_matrix())
-      finish_checkpoint(checkpoint, options.output);
+      finish_checkpoint(checkpoint, options.output, options.error_bounds);
     if(!options.sources_output.empty())
     {
       std::string text;

@@ -182,6 +182,43 @@ kill_and_resume)
   echo "killed after $resumed rows, resumed with $computed"
   [ ! -e out.npy.checkpoint ] || fail "the checkpoint was left behind"
   ;;
+error_bounds)
+  # issue 45: --error-bounds, a second .npy whose row k is dggvtp --source s --error-bounds, bit for
+  # bit; checkpointed with the rows (a kill and a resume give the same bytes), over MPI ranks too
+  lion_sources > l.txt
+  run "$lion" --sources l.txt --epsilon 1e-2 --output ref.npy --error-bounds ref_b.npy --threads 2 --quiet
+  [ "$rc" -eq 0 ] || fail "$err"
+  expect_shape ref_b.npy "60 8356 float64"
+  run "$lion" --sources l.txt --epsilon 1e-2 --output plain.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  cmp -s ref.npy plain.npy || fail "the rows changed with --error-bounds"
+  k=0
+  for s in $(head -3 l.txt); do
+    "$dggvtp" "$lion" --source "$s" --epsilon 1e-2 --error-bounds "b$s.txt" --quiet || fail "dggvtp failed on source $s"
+    "$npy_rows" ref_b.npy "$k" > "rb$k.txt" || fail "ref_b.npy is not a valid .npy file"
+    cmp -s "b$s.txt" "rb$k.txt" || fail "bounds row $k (source $s) differ from dggvtp --error-bounds"
+    k=$((k + 1))
+  done
+  DGGVTP_BATCH_TEST_KILL_AFTER_ROWS=7 "$batch" "$lion" --sources l.txt --epsilon 1e-2 --output out.npy \
+    --error-bounds out_b.npy --quiet 2>/dev/null
+  [ "$?" -eq 137 ] || fail "not killed after 7 rows"
+  [ ! -e out.npy ] && [ ! -e out_b.npy ] || fail "the killed run left an output file"
+  run "$lion" --sources l.txt --epsilon 1e-2 --output out.npy --quiet; expect_input_error "error_bounds 'yes' there, none now"
+  run "$lion" --sources l.txt --epsilon 1e-2 --output out.npy --error-bounds out_b.npy --stats st.json --quiet
+  [ "$rc" -eq 0 ] || fail "$err"
+  cmp -s ref.npy out.npy && cmp -s ref_b.npy out_b.npy || fail "the resumed run wrote other bytes"
+  [ "$(json_field st.json rows_resumed)" -eq 7 ] || fail "resumed $(json_field st.json rows_resumed) rows, expected 7"
+  [ ! -e out.npy.checkpoint ] || fail "the checkpoint was left behind"
+  run "$lion" --sources fps:4 --epsilon 1e-1 --output f.npy --error-bounds fb.npy --sources-output fs.txt --quiet
+  [ "$rc" -eq 0 ] || fail "$err"
+  same_as_dggvtp f.npy "$lion" "$(cat fs.txt)" --epsilon 1e-1
+  run "$lion" --sources all --output out.npz --max-distance 0.1 --error-bounds b.npy; expect_usage_error
+  run "$lion" --sources all --output out.npy --error-bounds out.npy; expect_usage_error
+  if [ "$mpiexec" != none ] && command -v "$mpiexec" >/dev/null 2>&1; then
+    mpi 2 "$lion" --sources l.txt --epsilon 1e-2 --output m.npy --error-bounds m_b.npy --quiet > mpi.log 2>&1 ||
+      fail "mpirun: $(cat mpi.log)"
+    cmp -s ref.npy m.npy && cmp -s ref_b.npy m_b.npy || fail "2 ranks: other bytes"
+  fi
+  ;;
 mpi_kill_one_rank_and_resume)
   # rank 1 of 3 killed (SIGKILL) after 3 durable rows of its 20, the job run again on 2 ranks: the
   # same bytes, at least rank 1's other 17 rows computed again
