@@ -132,9 +132,9 @@ public:
       m_origin[s] = (std::min)(m_origin[s], Index(distance.size()) + k);
   }
 
-  // Lines 23-24: a path of length `d` and key `key` reaches `v`, arriving from `direction` (pointing back along
-  // the path, in the frame of `corner`, one of v's corners: position `back` at `v`), from the
-  // pseudo-source `origin`. Paths that tie with the best one widen the recorded range of arrival
+  // Lines 23-24: a path of length `d` and key `key` reaches `v`, arriving from `direction`
+  // (pointing back along the path, in the frame of `corner`, one of v's corners: position `back`
+  // at `v`), from the pseudo-source `origin`. Paths that tie with the best one widen the recorded range of arrival
   // directions: the shadow of a saddle is the union of their shadows. Returns whether `v` must be
   // queued (again) at its distance. With `corner` no_halfedge, `v` is reached from `from`, a copy
   // of it (the same point, see Vertex_copies.h), at the copy's distance `d`: copies are singular,
