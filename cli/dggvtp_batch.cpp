@@ -851,6 +851,8 @@ Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, doub
 void encode_row(const std::vector<double>& row, Npy_dtype dtype, std::vector<char>& bytes)
 {
   bytes.resize(row.size() * dggvtp::npy_item_size(dtype));
+  if(row.empty()) // no --error-bounds: memcpy from an empty vector's null data is undefined
+    return;
   if(dtype == Npy_dtype::float64)
     std::memcpy(bytes.data(), row.data(), bytes.size());
   else
@@ -1247,7 +1249,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
           for(std::size_t i = 0; i < row.size(); ++i)
             state.nearest[i] = (std::min)(state.nearest[i], row[i]);
           encode_row(row, options.dtype, bytes[0]);
-          encode_row(values.bounds, options.dtype, bytes[1]);
+          encode_row(values.bounds, options.dtype, bytes[1]); // empty without --error-bounds
           durable_state = state;
           sink.write(r, bytes);
           ++computed;
