@@ -44,8 +44,8 @@
 #include <limits>
 #include <new>
 #include <optional>
-#include <tuple>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -496,7 +496,10 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
     points.swap(soup.points);
     triangles.swap(soup.triangles);
   }
-  dggvtp::release_soup(soup);
+  // the soup's memory goes back before the propagation, but where the isolines are drawn on its
+  // triangles afterwards (they need a full run: never with paths)
+  if(options.isolines_output.empty())
+    dggvtp::release_soup(soup);
 
   std::vector<FT> d(solver.number_of_vertices());
   std::vector<FT> lower(options.error_bounds.empty() ? 0 : d.size());
@@ -647,24 +650,27 @@ void write_labels(const std::vector<long long>& labels, const std::string& path,
     write_values(path, std::string(), labels, put_label_line);
 }
 
-// --output and --error-bounds in the format their option or extension gives; PLY and VTK files
-// read the mesh again (once for both)
-void write_fields(const Run& run, const Options& options)
+bool is_mesh_format(const std::string& path, const Options& options)
 {
-  std::optional<dggvtp::File_mesh> mesh;
+  const std::string format = dggvtp::output_format_of(path, options.output_format);
+  return !path.empty() && (format == "ply" || format == "vtk");
+}
+
+// --output and --error-bounds in the format their option or extension gives; PLY and VTK files
+// on `mesh`, the file's mesh as loaded
+void write_fields(const Run& run, const Options& options, const std::optional<dggvtp::File_mesh>& mesh)
+{
   for(const auto& [path, values, field] : {std::make_tuple(&options.output, &run.distances, "distance"),
                                            std::make_tuple(&options.error_bounds, &run.error_bounds, "error_bound")})
   {
     if(path->empty())
       continue;
     const std::string format = dggvtp::output_format_of(*path, options.output_format);
-    if(format != "ply" && format != "vtk")
+    if(!is_mesh_format(*path, options))
     {
       write_distances(*values, *path, format);
       continue;
     }
-    if(!mesh)
-      mesh = dggvtp::read_file_mesh(options.mesh, options.repair_option());
     Output_file file(*path);
     (format == "ply" ? dggvtp::write_ply_field : dggvtp::write_vtk_field)(
       file.get(), options.mesh, *mesh, *values, options.labels.empty() ? nullptr : &run.labels, field);
@@ -791,6 +797,10 @@ int run_main(int argc, char** argv)
   const Clock::time_point t0 = Clock::now();
   const dggvtp::Repair_option repair = options.repair_option();
   dggvtp::Loaded_soup soup = dggvtp::load_soup(options.mesh, repair);
+  // PLY and VTK fields are written on the faces as read, which the repairs and the solver change
+  std::optional<dggvtp::File_mesh> file_mesh;
+  if(is_mesh_format(options.output, options) || is_mesh_format(options.error_bounds, options))
+    file_mesh = dggvtp::file_mesh_of(soup);
   for(const auto& [places, what] : {std::make_pair(&options.sources, "source"), std::make_pair(&options.targets, "target"),
                                     std::make_pair(&options.path_targets, "path target")})
     for(const Place& p : *places)
@@ -842,7 +852,7 @@ int run_main(int argc, char** argv)
 #endif
 
   const Clock::time_point t_write = Clock::now();
-  write_fields(run, options);
+  write_fields(run, options, file_mesh);
   if(!options.labels.empty())
     write_labels(run.labels, options.labels,
                  dggvtp::output_format_of(options.labels, options.output_format) == "npy" ? "npy" : "text");
@@ -851,7 +861,8 @@ int run_main(int argc, char** argv)
   if(!options.isolines_output.empty())
   {
     Output_file file(options.isolines_output);
-    dggvtp::write_isolines_obj(file.get(), options.mesh, repair, run.distances,
+    // the soup's faces go to the isolines' mesh; only its sizes are read after this
+    dggvtp::write_isolines_obj(file.get(), options.mesh, std::move(soup), run.distances,
                                options.isolines > 0 ? dggvtp::evenly_spaced_values(run.distances, options.isolines)
                                                     : options.isolines_at);
     file.commit();

@@ -10,7 +10,7 @@ set -euo pipefail
 packages=(g++ cmake make libcgal-dev libgmp-dev libmpfr-dev libboost-dev libboost-graph-dev
           libboost-test-dev libeigen3-dev libtbb-dev libfast-float-dev libopenmpi-dev openmpi-bin
           pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest python3-matplotlib python3-setuptools
-          python3-venv python3-pip python3-mypy ccache git doxygen)
+          python3-venv python3-pip python3-mypy ccache git doxygen strace)
 if [ "${1:-}" = "--benchmark" ]; then
   packages+=(python3 python3-matplotlib)
 fi

@@ -55,6 +55,9 @@ run() {
   done
   ! printf '%s\n' "$out" "$err" | grep -qi 'farthest at -\?nan' || fail "NaN in the summary"
 }
+# check_field ply|vtk FILE MESH DISTANCES [LABELS]: the field file against the mesh and the text
+# output (FIELD_NAME: the field's name, distance by default)
+check_field() { /usr/bin/python3 "$(dirname "$0")/field_files.py" "$@" || fail "field file $2: see above"; }
 expect_rc() { [ "$rc" -eq "$1" ] || fail "exit status $rc, expected $1; stderr: $err"; }
 # bad input: exit 2, exactly one line on stderr, starting with error:, no output file left behind
 expect_input_error() {
@@ -1061,11 +1064,10 @@ TABLE
     /usr/bin/python3 -c 'import struct, sys; [print(struct.pack("<d", float(x))[::-1].hex()) for x in open(sys.argv[1]).read().split()]' \
       "$work/b.txt" > "$meta/text_bits"
     cmp -s "$meta/npy_bits" "$meta/text_bits" || fail "npy bounds differ from the text output"
-    check_field() { FIELD_NAME=error_bound /usr/bin/python3 "$(dirname "$0")/field_files.py" "$@" || fail "field file $2: see above"; }
     run "$spot" --quiet --source 3 --epsilon 1e-2 --error-bounds "$work/b.ply" --output "$work/d.vtk"; expect_rc 0
-    check_field ply "$work/b.ply" "$spot" "$work/b.txt"
+    FIELD_NAME=error_bound check_field ply "$work/b.ply" "$spot" "$work/b.txt"
     run "$spot" --quiet --source 3 --epsilon 1e-2 --error-bounds "$work/b.vtk"; expect_rc 0
-    check_field vtk "$work/b.vtk" "$spot" "$work/b.txt"
+    FIELD_NAME=error_bound check_field vtk "$work/b.vtk" "$spot" "$work/b.txt"
     run "$data/two_components_and_isolated_vertex.off" --quiet --epsilon 0.5 --error-bounds "$work/u.txt"; expect_rc 0
     [ "$(tr '\n' ' ' < "$work/u.txt")" = "0 0 0 inf inf inf inf " ] || fail "unreached: $(tr '\n' ' ' < "$work/u.txt")"
     run "$spot" --source 3 --target 9 --error-bounds "$work/t.txt"; expect_usage_error
@@ -1073,7 +1075,6 @@ TABLE
     run "$spot" --source 3 --output - --error-bounds -; expect_usage_error
     run "$spot" --source 3 --error-bounds ""; expect_usage_error ;;
   field_files_ply_vtk)  # issue 30: the mesh with the field, for MeshLab and ParaView
-    check_field() { /usr/bin/python3 "$(dirname "$0")/field_files.py" "$@" || fail "field file $2: see above"; }
     run "$spot" --quiet --source 3 --source 900 --output "$work/d.txt" --labels "$work/l.txt"; expect_rc 0
     run "$spot" --quiet --source 3 --source 900 --output "$work/d.ply" --labels "$work/l2.txt"; expect_rc 0
     check_field ply "$work/d.ply" "$spot" "$work/d.txt" "$work/l.txt"
@@ -1092,6 +1093,20 @@ TABLE
     check_field ply "$work/u.ply" "$work/u.ply" "$work/u.txt" "$work/ul.txt"
     check_field vtk "$work/u.vtk" "$work/u.ply" "$work/u.txt" "$work/ul.txt"
     grep -q inf "$work/u.txt" || fail "the unreachable case reaches everything" ;;
+  mesh_read_once)  # the mesh file is read once, whatever is written on it (the PLY and VTK fields, isolines)
+    command -v strace > /dev/null || fail "no strace (bash scripts/install_dependencies.sh installs it)"
+    cp "$data/quad.off" "$work/q.off"
+    for outputs in "--output d.ply --error-bounds b.vtk" "--isolines 3 --isolines-output i.obj --output d.vtk" \
+                   "--repair --output d.ply --isolines-at 0.5 --isolines-output i.obj"; do
+      # opened twice: the check that it is readable, and the read
+      (cd "$work" && timeout 60 strace -f -qq -e trace=open,openat -o "$meta/trace" "$bin" q.off --quiet --epsilon 0.1 $outputs) ||
+        fail "dggvtp under strace: $outputs"
+      [ "$(grep -c '"q.off"' "$meta/trace")" -eq 2 ] || fail "the mesh was opened other than twice with $outputs: $(grep q.off "$meta/trace")"
+    done
+    # the same files as the mesh read again would give (measured on the previous commit: same bytes)
+    run "$work/q.off" --quiet --output "$work/t.txt"; expect_rc 0
+    check_field ply "$work/d.ply" "$work/d.ply" "$work/t.txt"
+    check_field vtk "$work/d.vtk" "$work/d.ply" "$work/t.txt" ;;
   output_format_by_extension)  # issue 30: .npy, .ply, .vtk choose their format; --output-format overrides
     run "$spot" --quiet --output "$work/d.txt" --labels "$work/l.txt"; expect_rc 0
     run "$spot" --quiet --output "$work/d.npy" --labels "$work/l.npy"; expect_rc 0

@@ -34,29 +34,43 @@ inline std::string output_format_of(const std::string& path, const std::string& 
 }
 
 // The mesh of a file, as the fields are written on it: its points in the file's order, and its
-// faces as read (polygons are kept, orientations are the file's; with `repair` on, without the
-// faces that repeat a vertex, as loading leaves them out).
+// faces as read (polygons are kept, orientations are the file's; with --repair, without the faces
+// that repeat a vertex, as loading leaves them out). Kept while the solver runs, so in flat
+// arrays: 12 bytes a triangle.
 struct File_mesh
 {
   std::vector<std::array<double, 3>> points;
-  std::vector<std::vector<std::uint32_t>> faces;
+  std::vector<std::uint32_t> corners;  // the faces' vertices, face after face
+  std::vector<std::size_t> face_start; // face f: corners [face_start[f], face_start[f + 1]); empty: all triangles
+
+  std::size_t number_of_faces() const { return face_start.empty() ? corners.size() / 3 : face_start.size() - 1; }
+  std::size_t face_size(std::size_t f) const { return face_start.empty() ? 3 : face_start[f + 1] - face_start[f]; }
+  const std::uint32_t* face(std::size_t f) const { return corners.data() + (face_start.empty() ? 3 * f : face_start[f]); }
 };
 
-inline File_mesh read_file_mesh(const std::string& path, const Repair_option& repair)
+// The file mesh of a soup as loading gives it, before the repairs and the solver change it.
+inline File_mesh file_mesh_of(const Loaded_soup& soup)
 {
-  Loaded_soup soup = load_soup(path, repair);
   File_mesh mesh;
   mesh.points.reserve(soup.file_vertices);
   for(std::size_t i = 0; i < soup.file_vertices; ++i)
     mesh.points.push_back({soup.points[i].x(), soup.points[i].y(), soup.points[i].z()});
   const auto file_vertex = [&](std::size_t v) { return std::uint32_t(soup.file_vertex_of[v]); };
+  mesh.corners.reserve(3 * soup.triangles.size());
   for(const auto& t : soup.triangles)
-    mesh.faces.push_back({file_vertex(t[0]), file_vertex(t[1]), file_vertex(t[2])});
-  for(const auto& polygon : soup.polygons)
+    for(std::uint32_t v : t)
+      mesh.corners.push_back(file_vertex(v));
+  if(!soup.polygons.empty())
   {
-    mesh.faces.emplace_back();
-    for(std::size_t v : polygon)
-      mesh.faces.back().push_back(file_vertex(v));
+    mesh.face_start.reserve(soup.triangles.size() + soup.polygons.size() + 1);
+    for(std::size_t f = 0; f <= soup.triangles.size(); ++f)
+      mesh.face_start.push_back(3 * f);
+    for(const auto& polygon : soup.polygons)
+    {
+      for(std::size_t v : polygon)
+        mesh.corners.push_back(file_vertex(v));
+      mesh.face_start.push_back(mesh.corners.size());
+    }
   }
   return mesh;
 }
@@ -139,8 +153,8 @@ inline void write_ply_field(std::FILE* file, const std::string& mesh_name, const
                             const std::string& field = "distance")
 {
   internal::check_field_sizes(mesh, distances, labels);
-  for(const auto& face : mesh.faces)
-    if(face.size() > 255)
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
+    if(mesh.face_size(f) > 255)
       throw Input_error("a face of more than 255 vertices does not fit a PLY face list of uchar size");
   float largest = 0.f;
   for(double d : distances)
@@ -150,7 +164,7 @@ inline void write_ply_field(std::FILE* file, const std::string& mesh_name, const
   out.text("ply\nformat binary_little_endian 1.0\ncomment " + internal::header_comment(mesh_name, field) +
            "\nelement vertex " + std::to_string(mesh.points.size()) +
            "\nproperty float x\nproperty float y\nproperty float z\nproperty float quality\nproperty double " + field + "\n" +
-           (labels ? "property int label\n" : "") + "element face " + std::to_string(mesh.faces.size()) +
+           (labels ? "property int label\n" : "") + "element face " + std::to_string(mesh.number_of_faces()) +
            "\nproperty list uchar int vertex_indices\nend_header\n");
   for(std::size_t v = 0; v < mesh.points.size(); ++v)
   {
@@ -161,11 +175,11 @@ inline void write_ply_field(std::FILE* file, const std::string& mesh_name, const
     if(labels)
       out.value(std::int32_t((*labels)[v]));
   }
-  for(const auto& face : mesh.faces)
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
   {
-    out.value(std::uint8_t(face.size()));
-    for(std::uint32_t v : face)
-      out.value(std::int32_t(v));
+    out.value(std::uint8_t(mesh.face_size(f)));
+    for(std::size_t k = 0; k < mesh.face_size(f); ++k)
+      out.value(std::int32_t(mesh.face(f)[k]));
   }
 }
 
@@ -177,9 +191,7 @@ inline void write_vtk_field(std::FILE* file, const std::string& mesh_name, const
                             const std::string& field = "distance")
 {
   internal::check_field_sizes(mesh, distances, labels);
-  std::size_t list_size = 0;
-  for(const auto& face : mesh.faces)
-    list_size += 1 + face.size();
+  const std::size_t list_size = mesh.number_of_faces() + mesh.corners.size();
   if(list_size > std::size_t((std::numeric_limits<std::int32_t>::max)()))
     throw Input_error("the mesh has too many faces for a legacy VTK file");
   internal::Byte_writer out(file, true);
@@ -188,12 +200,12 @@ inline void write_vtk_field(std::FILE* file, const std::string& mesh_name, const
   for(const auto& p : mesh.points)
     for(double c : p)
       out.value(c);
-  out.text("\nPOLYGONS " + std::to_string(mesh.faces.size()) + " " + std::to_string(list_size) + "\n");
-  for(const auto& face : mesh.faces)
+  out.text("\nPOLYGONS " + std::to_string(mesh.number_of_faces()) + " " + std::to_string(list_size) + "\n");
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
   {
-    out.value(std::int32_t(face.size()));
-    for(std::uint32_t v : face)
-      out.value(std::int32_t(v));
+    out.value(std::int32_t(mesh.face_size(f)));
+    for(std::size_t k = 0; k < mesh.face_size(f); ++k)
+      out.value(std::int32_t(mesh.face(f)[k]));
   }
   out.text("\nPOINT_DATA " + std::to_string(mesh.points.size()) + "\nSCALARS " + field + " double 1\nLOOKUP_TABLE default\n");
   for(double d : distances)

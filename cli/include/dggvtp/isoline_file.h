@@ -9,7 +9,6 @@
 #define DGGVTP_ISOLINE_FILE_H
 
 #include <dggvtp/load_mesh.h>
-#include <dggvtp/repair.h>
 
 #include <CGAL/DGG_VTP_3/isolines.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -39,18 +38,16 @@ inline std::vector<double> evenly_spaced_values(const std::vector<double>& dista
   return values;
 }
 
-// Writes the isolines of `distances` (per vertex of the file `mesh_path`, which is read again) at
-// `values` as OBJ: per value a comment, then per piece its points as v lines and one l line
-// through them; a closed piece repeats its first vertex at the end of its l line. The field is
-// interpolated on the triangles the solver gets (polygons triangulated, orientations fixed, and
-// with `repair` on the repairs of --repair); a vertex split there takes the distance of its file vertex.
-inline void write_isolines_obj(std::FILE* file, const std::string& mesh_path, const Repair_option& repair,
+// Writes the isolines of `distances` (per file vertex of the mesh `mesh_name`) at `values` as OBJ:
+// per value a comment, then per piece its points as v lines and one l line through them; a closed
+// piece repeats its first vertex at the end of its l line. The field is interpolated on the
+// triangles of `soup`, the soup the solver was made of (polygons triangulated, orientations fixed,
+// the repairs of --repair made), which making the mesh consumes; a vertex split there takes the
+// distance of its file vertex.
+inline void write_isolines_obj(std::FILE* file, const std::string& mesh_name, Loaded_soup soup,
                                const std::vector<double>& distances, const std::vector<double>& values)
 {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  Loaded_soup soup = load_soup(mesh_path, repair);
-  if(repair.on)
-    repair_soup(soup, repair);
   auto mesh = make_triangle_mesh<Kernel>(soup);
   using Mesh = decltype(mesh);
   if(num_vertices(mesh) != soup.file_vertex_of.size())
@@ -66,7 +63,7 @@ inline void write_isolines_obj(std::FILE* file, const std::string& mesh_path, co
     return std::string(text, std::to_chars(text, text + sizeof text, x, std::chars_format::general, 17).ptr);
   };
   std::fprintf(file, "# dggvtp: isolines of the geodesic distance on %s, one l line per connected piece\n",
-               mesh_path.c_str());
+               mesh_name.c_str());
   std::size_t written = 0, piece = 0;
   for(std::size_t k = 0; k < values.size(); ++k)
   {
