@@ -876,6 +876,14 @@ std::size_t rows_before_test_kill(int rank)
   return parse_number<std::size_t>("DGGVTP_BATCH_TEST_KILL_AFTER_ROWS", rows);
 }
 
+// For tests only: the signal of that kill, SIGKILL, or SIGSTOP with DGGVTP_BATCH_TEST_KILL_SIGNAL=STOP:
+// the process then stops there, its checkpoint locked, until a test has run what it wants beside it
+int test_kill_signal()
+{
+  const char* name = std::getenv("DGGVTP_BATCH_TEST_KILL_SIGNAL");
+  return name != nullptr && std::string(name) == "STOP" ? SIGSTOP : SIGKILL;
+}
+
 // Writes rows at their offsets, into each of the files at `paths` (the rows, and their bounds with
 // --error-bounds); every `interval` at most (and at the end) makes what was written durable in
 // all of them and only then reports those rows as done (`on_durable`: the record). A kill loses at
@@ -902,7 +910,7 @@ public:
     if(++m_written == m_kill_after)
     {
       flush_locked();
-      std::raise(SIGKILL);
+      std::raise(test_kill_signal());
     }
     if(seconds_since(m_last_sync) >= m_interval)
       flush_locked();

@@ -3,6 +3,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_dependencies.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDGG_VTP_3_REQUIRE_ALL_TESTS=ON
 cmake --build build -j2
 ctest --test-dir build --output-on-failure -j2

@@ -18,6 +18,9 @@
 
 #include <atomic>
 #include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <thread>
 #include <utility>
@@ -29,7 +32,17 @@ class Interrupt_check
 {
 public:
   // made where the GIL is held, on the thread that called from Python
-  Interrupt_check() : m_caller(std::this_thread::get_id()) {}
+  Interrupt_check() : m_caller(std::this_thread::get_id()), m_test_raise_at(test_sigint_check()) {}
+
+  // For tests only (DGGVTP_TEST_SIGINT_AT_CHECK=N): the caller's N-th check sends SIGINT to the
+  // process, as Ctrl-C would, and asks Python at once; the end of the call says on stderr how many
+  // checks it made, so that a test knows the call stopped at that check and not at its end,
+  // whatever the speed of the machine (a Ctrl-C from outside races the call).
+  ~Interrupt_check()
+  {
+    if(m_test_raise_at != 0)
+      std::fprintf(stderr, "dggvtp test hook: SIGINT at check %zu, %zu checks in the call\n", m_test_raise_at, m_checks);
+  }
 
   // Whether the call must stop, from any thread, the GIL released: the caller's thread asks
   // Python for its pending signals (at most every 20 ms: it takes the GIL); the other threads
@@ -40,8 +53,11 @@ public:
       return true;
     if(std::this_thread::get_id() != m_caller)
       return false;
+    const bool test_raise = ++m_checks == m_test_raise_at;
+    if(test_raise)
+      std::raise(SIGINT);
     const auto now = std::chrono::steady_clock::now();
-    if(now - m_last < std::chrono::milliseconds(20))
+    if(!test_raise && now - m_last < std::chrono::milliseconds(20))
       return false;
     m_last = now;
     pybind11::gil_scoped_acquire gil;
@@ -71,7 +87,15 @@ public:
   }
 
 private:
+  static std::size_t test_sigint_check()
+  {
+    const char* n = std::getenv("DGGVTP_TEST_SIGINT_AT_CHECK");
+    return n != nullptr ? std::size_t(std::strtoull(n, nullptr, 10)) : 0;
+  }
+
   std::thread::id m_caller;
+  std::size_t m_test_raise_at; // see ~Interrupt_check()
+  std::size_t m_checks = 0;    // by the caller's thread
   std::chrono::steady_clock::time_point m_last{};
   std::atomic<bool> m_raised{false};
   std::optional<pybind11::error_already_set> m_error;

@@ -3,7 +3,9 @@
 The suite runs on the package wherever it is imported from (the build tree, PYTHONPATH=build/python,
 or an installed one). CTest sets DGGVTP_DATA (data/meshes), and DGGVTP_CLI and DGGVTP_BATCH (the
 programs built with the module): the tests that compare with them are marked needs_cli and skipped
-without them."""
+without them. With DGGVTP_REQUIRE_ALL=1 (CTest's setting under DGG_VTP_3_REQUIRE_ALL_TESTS, as CI
+runs it) a missing program or tool fails the file instead: CI requires every test."""
+import importlib.util
 import os
 import pathlib
 import subprocess
@@ -17,8 +19,19 @@ CLI = os.environ.get("DGGVTP_CLI")
 BATCH = os.environ.get("DGGVTP_BATCH")
 MESHES = sorted(p.name for p in DATA.glob("*.ply"))
 
-needs_cli = pytest.mark.skipif(not CLI or not os.path.exists(CLI), reason="dggvtp not built (DGGVTP_CLI)")
-needs_batch = pytest.mark.skipif(not BATCH or not os.path.exists(BATCH), reason="dggvtp-batch not built (DGGVTP_BATCH)")
+REQUIRE_ALL = os.environ.get("DGGVTP_REQUIRE_ALL") == "1"
+
+
+def needs(present, reason):
+    """a mark that skips a test when `present` is false, or, with DGGVTP_REQUIRE_ALL=1, an error"""
+    if REQUIRE_ALL and not present:
+        raise RuntimeError(f"{reason}: every test is required (DGGVTP_REQUIRE_ALL=1)")
+    return pytest.mark.skipif(not present, reason=reason)
+
+
+needs_cli = needs(bool(CLI) and os.path.exists(CLI), "dggvtp not built (DGGVTP_CLI)")
+needs_batch = needs(bool(BATCH) and os.path.exists(BATCH), "dggvtp-batch not built (DGGVTP_BATCH)")
+needs_mypy = needs(importlib.util.find_spec("mypy") is not None, "mypy is not installed (python3-mypy)")
 
 
 def mesh(name):

@@ -99,7 +99,7 @@ def main():
                     fail(f"the package installed by `{command}` does not work")
         # the suite on the installed package, without the CLI: the tests that need it are skipped
         t0 = time.monotonic()
-        suite = subprocess.run([python, "-m", "pytest", "-q", "-p", "no:cacheprovider", clone / "python" / "tests"],
+        suite = subprocess.run([python, "-m", "pytest", "-q", "-rs", "-p", "no:cacheprovider", clone / "python" / "tests"],
                                cwd=outside, env=env)
         print(f"  pytest on the installed package: {time.monotonic() - t0:.0f} s", flush=True)
         if suite.returncode != 0:

@@ -2,7 +2,6 @@
 (names, kinds, defaults), real types in the signatures help() shows, and mypy (when installed)
 checks a program against the stubs and finds its mistakes."""
 import ast
-import importlib.util
 import inspect
 import pathlib
 import subprocess
@@ -11,9 +10,9 @@ import sys
 import pytest
 
 import dggvtp
+from conftest import needs_mypy
 
 PACKAGE = pathlib.Path(dggvtp.__file__).parent
-needs_mypy = pytest.mark.skipif(importlib.util.find_spec("mypy") is None, reason="mypy is not installed (python3-mypy)")
 
 
 def test_layout():

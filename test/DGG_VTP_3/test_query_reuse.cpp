@@ -7,7 +7,8 @@
 // to the next and resets only what the previous query touched (issue 42). Every query must then
 // give the bits, and the counts, of the same query on a fresh solver, whatever came before it: a
 // larger query, an early-terminated one (windows left in the lists), a cancelled one, another
-// accuracy, point sources, labels; and from many threads sharing one solver.
+// accuracy, point sources, labels; and from many threads sharing one solver. A solver assigned
+// another answers as that one, and a shortest path tree outlives its solver.
 
 #include "test_utilities.h"
 
@@ -120,16 +121,45 @@ std::vector<std::pair<std::string, Query>> queries(const Mesh& mesh)
   return q;
 }
 
-// the answers of fresh solvers: a copy of a solver has no kept state of its own
-std::vector<Answer> fresh_answers(const Solver& solver, const std::vector<std::pair<std::string, Query>>& q)
+// the answers of fresh solvers (a copy of a solver shares its kept state: not fresh)
+std::vector<Answer> fresh_answers(const Mesh& mesh, const std::vector<std::pair<std::string, Query>>& q)
 {
   std::vector<Answer> answers;
   for(const auto& query : q)
-  {
-    const Solver fresh = solver;
-    answers.push_back(query.second(fresh));
-  }
+    answers.push_back(query.second(Solver(mesh)));
   return answers;
+}
+
+// every query on `solver` gives the answer of a fresh solver of `mesh`
+void check_fresh(const Solver& solver, const Mesh& mesh, const std::vector<Answer>& fresh, const std::string& what)
+{
+  const auto q = queries(mesh);
+  for(std::size_t j = 0; j < q.size(); ++j)
+    BOOST_TEST(same(q[j].second(solver), fresh[j]), what << ": '" << q[j].first << "'");
+}
+
+// `count` threads share `solver`, each running every query in its own order 3 times, and
+// `before(t, i)` before its i-th query: every answer is the fresh one
+void check_on_threads(const Solver& solver, const std::vector<std::pair<std::string, Query>>& q,
+                      const std::vector<Answer>& fresh, std::size_t count,
+                      const std::function<void(std::size_t, std::size_t)>& before)
+{
+  std::vector<std::size_t> wrong(count, 0);
+  std::vector<std::thread> threads;
+  for(std::size_t t = 0; t < count; ++t)
+    threads.emplace_back([&, t] {
+      for(std::size_t i = 0; i < 3 * q.size(); ++i)
+      {
+        before(t, i);
+        const std::size_t j = (i % q.size() * (t + 1) + i / q.size()) % q.size();
+        if(!same(q[j].second(solver), fresh[j]))
+          ++wrong[t];
+      }
+    });
+  for(std::thread& t : threads)
+    t.join();
+  for(std::size_t t = 0; t < count; ++t)
+    BOOST_TEST(wrong[t] == 0u, "thread " << t << ": " << wrong[t] << " answers differ from a fresh solver's");
 }
 
 } // namespace
@@ -145,7 +175,7 @@ BOOST_AUTO_TEST_CASE(a_query_after_another_gives_the_fresh_answer)
     const Mesh mesh = make_mesh<Mesh>(read_soup(name));
     const Solver solver(mesh);
     const auto q = queries(mesh);
-    const std::vector<Answer> fresh = fresh_answers(solver, q);
+    const std::vector<Answer> fresh = fresh_answers(mesh, q);
     for(std::size_t i = 0; i < q.size(); ++i)
       for(std::size_t j = 0; j < q.size(); ++j)
       {
@@ -164,7 +194,7 @@ BOOST_AUTO_TEST_CASE(a_cancelled_query_leaves_no_state)
   const Mesh mesh = make_mesh<Mesh>(read_soup("pinion.ply"));
   const Solver solver(mesh);
   const auto q = queries(mesh);
-  const std::vector<Answer> fresh = fresh_answers(solver, q);
+  const std::vector<Answer> fresh = fresh_answers(mesh, q);
   for(double accuracy : {0., 1e-1})
   {
     auto map = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
@@ -183,23 +213,74 @@ BOOST_AUTO_TEST_CASE(threads_sharing_one_solver)
   const Mesh mesh = make_mesh<Mesh>(read_soup("pinion.ply"));
   const Solver solver(mesh);
   const auto q = queries(mesh);
-  const std::vector<Answer> fresh = fresh_answers(solver, q);
-  std::vector<std::size_t> wrong(4, 0);
-  std::vector<std::thread> threads;
-  for(std::size_t t = 0; t < wrong.size(); ++t)
-    threads.emplace_back([&, t] {
-      for(std::size_t round = 0; round < 3; ++round)
-        for(std::size_t i = 0; i < q.size(); ++i)
-        {
-          const std::size_t j = (i * (t + 1) + round) % q.size();
-          if(!same(q[j].second(solver), fresh[j]))
-            ++wrong[t];
-        }
-    });
-  for(std::thread& t : threads)
-    t.join();
-  for(std::size_t t = 0; t < wrong.size(); ++t)
-    BOOST_TEST(wrong[t] == 0u, "thread " << t << ": " << wrong[t] << " answers differ from a fresh solver's");
+  const std::vector<Answer> fresh = fresh_answers(mesh, q);
+  check_on_threads(solver, q, fresh, 4, [](std::size_t, std::size_t) {});
+}
+
+// A solver assigned another (a larger mesh, then a smaller one), by copy or by move, answers as a
+// fresh solver of that mesh: the propagations it kept were made for its former mesh. A copy and
+// a solver moved from answer too.
+BOOST_AUTO_TEST_CASE(assigned_and_moved_solvers_answer_as_fresh_ones)
+{
+  const Mesh pinion = make_mesh<Mesh>(read_soup("pinion.ply")), spot = make_mesh<Mesh>(read_soup("spot.ply"));
+  const std::vector<Answer> fresh_pinion = fresh_answers(pinion, queries(pinion)),
+                            fresh_spot = fresh_answers(spot, queries(spot));
+  Solver solver(pinion);
+  check_fresh(solver, pinion, fresh_pinion, "pinion");
+  solver = Solver(spot); // move assignment
+  check_fresh(solver, spot, fresh_spot, "pinion assigned a moved spot solver");
+  Solver other(pinion);
+  check_fresh(other, pinion, fresh_pinion, "another pinion solver");
+  solver = other; // copy assignment, to a smaller mesh
+  check_fresh(solver, pinion, fresh_pinion, "spot assigned a pinion solver");
+  other = Solver(spot);
+  check_fresh(solver, pinion, fresh_pinion, "the copy, once the original is assigned spot");
+  const Solver moved(std::move(other));
+  check_fresh(moved, spot, fresh_spot, "a solver moved from another");
+  check_fresh(other, spot, fresh_spot, "the solver moved from"); // NOLINT(bugprone-use-after-move): it stays usable
+  const Solver copy(moved);
+  check_fresh(copy, spot, fresh_spot, "a copy");
+}
+
+// a shortest path tree keeps what it needs of its solver: it outlives it, and it stays the same
+// when the solver is assigned another
+BOOST_AUTO_TEST_CASE(a_shortest_path_tree_outlives_its_solver)
+{
+  const Mesh spot = make_mesh<Mesh>(read_soup("spot.ply")), pinion = make_mesh<Mesh>(read_soup("pinion.ply"));
+  const std::vector<V> all = vertex_list(spot);
+  const auto path_of = [&](const auto& tree) {
+    std::vector<double> path;
+    using Point = typename std::decay_t<decltype(tree)>::Path_point;
+    std::vector<Point> points;
+    tree.shortest_path(all[2000], std::back_inserter(points));
+    for(const Point& p : points)
+      path.insert(path.end(), p.location.second.begin(), p.location.second.end());
+    path.push_back(tree.distance(all[2000]));
+    return path;
+  };
+  const std::vector<double> expected = path_of(Solver(spot).compute_shortest_path_tree(std::vector<V>{all[5]}));
+  BOOST_TEST(expected.size() > 4u);
+  Solver solver(spot);
+  const auto tree = solver.compute_shortest_path_tree(std::vector<V>{all[5]});
+  solver = Solver(pinion);
+  BOOST_TEST(same_bits(path_of(tree), expected), "the solver assigned another mesh");
+  const auto orphan = [&] { return Solver(spot).compute_shortest_path_tree(std::vector<V>{all[5]}); }();
+  BOOST_TEST(same_bits(path_of(orphan), expected), "the solver destroyed");
+}
+
+// release_query_memory() while threads query the solver: they go on, with the fresh answers
+BOOST_AUTO_TEST_CASE(releasing_the_memory_while_threads_query)
+{
+  const Mesh mesh = make_mesh<Mesh>(read_soup("pinion.ply"));
+  const Solver solver(mesh);
+  const auto q = queries(mesh);
+  const std::vector<Answer> fresh = fresh_answers(mesh, q);
+  check_on_threads(solver, q, fresh, 3, [&solver](std::size_t t, std::size_t i) {
+    if(t == 0 && i % 3 == 0)
+      solver.release_query_memory();
+  });
+  solver.release_query_memory();
+  check_fresh(solver, mesh, fresh, "after the memory is released");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

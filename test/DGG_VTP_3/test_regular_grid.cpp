@@ -136,17 +136,19 @@ BOOST_AUTO_TEST_CASE(accuracy_contract)
       {
         const std::vector<double> d = geodesic_distances(mesh, s, nullptr, CGAL::parameters::accuracy(epsilon));
         double above = 0., below = 0.;
+        std::size_t outside = 0; // written so that a NaN counts
         for(std::size_t i = 0; i < d.size(); ++i)
           if(i != s)
           {
             const double e = (d[i] - truth[i]) / truth[i];
             above = (std::max)(above, e);
             below = (std::min)(below, e);
+            outside += !(e <= epsilon && e >= -1e-12);
           }
         const std::string label = grid_label(g, s) + ", epsilon " + std::to_string(epsilon);
         BOOST_TEST_MESSAGE(label << ": max relative error " << above << ", min " << below);
-        BOOST_TEST(above <= epsilon, label << ": " << above);
-        BOOST_TEST(below >= -1e-12, label << ": " << below);
+        BOOST_TEST(outside == 0u, label << ": " << outside << " vertices outside [-1e-12, epsilon] (or NaN); max "
+                                        << above << ", min " << below);
         BOOST_TEST(d[s] == 0.);
       }
     }

@@ -395,8 +395,9 @@ BOOST_AUTO_TEST_CASE(sheets_of_one_triangle)
     for(double accuracy : {0., 1e-3})
     {
       const std::vector<double> d = distances(Solver(points, faces), points.size(), 0, accuracy);
-      for(std::size_t v = 0; v < 3; ++v)
-        BOOST_CHECK_CLOSE_FRACTION(d[v] + 1., expected[v] + 1., 1e-15 + accuracy);
+      for(std::size_t v = 0; v < 3; ++v) // relative: the needle's tip is 4e-3 away
+        BOOST_TEST((d[v] >= expected[v] * (1. - 1e-15) && d[v] <= expected[v] * (1. + accuracy) * (1. + 1e-15)),
+                   "vertex " << v << ": " << d[v] << ", exact " << expected[v] << ", accuracy " << accuracy);
     }
 }
 

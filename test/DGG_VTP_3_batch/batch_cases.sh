@@ -69,12 +69,12 @@ expect_shape() { # NPY "ROWS COLUMNS DTYPE"
   [ "$shape" = "$2" ] || fail "$1: shape $shape, expected $2"
 }
 json_field() { sed -n "s/.*\"$2\": \([0-9.e+-]*\).*/\1/p" "$1"; }
-# wait_for_records CHECKPOINT PID: until some row is recorded done (or the run ends)
-wait_for_records() {
+# wait_until_stopped PID: until the process is stopped (state T), at most 60 s; fails if it ends
+wait_until_stopped() {
   local i
-  for ((i = 0; i < 600; ++i)); do
-    [ -n "$(cat "$1"/done.* 2>/dev/null)" ] && return 0
-    kill -0 "$2" 2>/dev/null || return 1
+  for ((i = 0; i < 1200; ++i)); do
+    [ "$(awk '{ print $3 }' "/proc/$1/stat" 2>/dev/null)" = T ] && return 0
+    kill -0 "$1" 2>/dev/null || return 1
     sleep 0.05
   done
   return 1
@@ -239,10 +239,14 @@ mpi_kill_one_rank_and_resume)
   ;;
 resume_refuses_another_command)
   lion_sources > l.txt
-  "$batch" "$lion" --sources l.txt --output out.npy --epsilon 1e-6 --quiet 2>/dev/null &
+  # the first run stops itself (SIGSTOP) after 3 durable rows, its checkpoint locked: the second
+  # one comes while it holds it, whatever the speed of the machine
+  DGGVTP_BATCH_TEST_KILL_AFTER_ROWS=3 DGGVTP_BATCH_TEST_KILL_SIGNAL=STOP \
+    "$batch" "$lion" --sources l.txt --output out.npy --epsilon 1e-6 --quiet 2>/dev/null &
   pid=$!
-  wait_for_records out.npy.checkpoint "$pid" || fail "no row recorded before the run ended"
-  # a second run on the checkpoint while the first is at work
+  wait_until_stopped "$pid" || fail "the first run did not stop after 3 rows"
+  [ "$(records out.npy.checkpoint 0)" -eq 3 ] || fail "$(records out.npy.checkpoint 0) rows recorded, expected 3"
+  # a second run on the checkpoint while the first holds it
   run "$lion" --sources l.txt --output out.npy --epsilon 1e-6 --quiet; expect_input_error "another dggvtp-batch is running"
   kill -9 "$pid"; wait "$pid" 2>/dev/null
   run "$lion" --sources l.txt --output out.npy --epsilon 1e-5 --quiet

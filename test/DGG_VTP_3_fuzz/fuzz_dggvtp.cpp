@@ -4,7 +4,10 @@
 // Author(s): DGG-VTP for CGAL team
 
 // libFuzzer target: bytes as a mesh file, read by the loader of dggvtp, then the exact
-// propagation and one DGG-VTP run (accuracy 1e-4), as the command-line program does them.
+// propagation and one DGG-VTP run (accuracy 1e-4), as the command-line program does them, and
+// both again on 2 threads (Parallel_tag, where linked with TBB), which must give the same bits:
+// patches here have 4 faces or more (CGAL_DGG_VTP_3_MIN_PATCH_FACES, 2048 in a release), so that
+// the small inputs run rounds across patches, with the copies a repair makes among them.
 //
 // The first byte chooses how the rest is read:
 //   bits 0-1  the file's extension: .off, .ply, .obj, .stl
@@ -23,11 +26,18 @@
 // distance outside [exact, (1 + 1e-4) exact] aborts too (off by default: this tests accuracy,
 // not robustness).
 
+#define CGAL_DGG_VTP_3_MIN_PATCH_FACES 4
+
 #include <dggvtp/load_mesh.h>
 
 #include <CGAL/DGG_VTP_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 #include <unistd.h>
 
@@ -55,14 +65,23 @@ namespace {
 template <class Kernel>
 using Solver = CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Kernel>;
 
+// distances per solver vertex
+template <class Kernel, class ConcurrencyTag = CGAL::Sequential_tag>
+std::vector<typename Kernel::FT> solver_distances(const dggvtp::Loaded_soup& soup, const Solver<Kernel>& solver,
+                                                  std::size_t source, double accuracy)
+{
+  std::vector<typename Kernel::FT> d(solver.number_of_vertices());
+  solver.template compute_distances_to_nearest_source<ConcurrencyTag>(
+    dggvtp::solver_vertices_of(soup, source), CGAL::make_property_map(d), CGAL::parameters::accuracy(accuracy));
+  return d;
+}
+
 // distances per file vertex, the smallest over the copies that loading made (as dggvtp does)
 template <class Kernel>
 std::vector<double> file_distances(const dggvtp::Loaded_soup& soup, const Solver<Kernel>& solver,
                                    std::size_t source, double accuracy)
 {
-  std::vector<typename Kernel::FT> d(solver.number_of_vertices());
-  solver.compute_distances_to_nearest_source(dggvtp::solver_vertices_of(soup, source), CGAL::make_property_map(d),
-                                             CGAL::parameters::accuracy(accuracy));
+  const std::vector<typename Kernel::FT> d = solver_distances<Kernel>(soup, solver, source, accuracy);
   for(std::size_t i = 0; i < d.size(); ++i)
   {
     if(std::isnan(double(d[i])))
@@ -70,6 +89,14 @@ std::vector<double> file_distances(const dggvtp::Loaded_soup& soup, const Solver
     if(d[i] < 0)
       fail("negative distance at solver vertex " + std::to_string(i));
   }
+#ifdef CGAL_LINKED_WITH_TBB
+  {
+    const tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+    const std::vector<typename Kernel::FT> threaded = solver_distances<Kernel, CGAL::Parallel_tag>(soup, solver, source, accuracy);
+    if(std::memcmp(threaded.data(), d.data(), d.size() * sizeof(d[0])) != 0)
+      fail("2 threads give other distances than one (accuracy " + std::to_string(accuracy) + ")");
+  }
+#endif
   const std::vector<double> out = dggvtp::file_vertex_distances(soup, d);
   if(out[source] != 0.)
     fail("the source is at " + std::to_string(out[source]) + ", not 0");

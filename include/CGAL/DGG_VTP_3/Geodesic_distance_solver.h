@@ -33,6 +33,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -273,7 +274,7 @@ public:
                                                              VertexDistanceMap distances,
                                                              const NamedParameters& np = parameters::default_values()) const
   {
-    return m_core.template distances_to_nearest_source<ConcurrencyTag>(sources, distances, np);
+    return m_core->template distances_to_nearest_source<ConcurrencyTag>(sources, distances, np);
   }
 
   /*!
@@ -309,7 +310,7 @@ public:
                                      const VertexDistanceMapRange& distance_maps,
                                      const NamedParameters& np = parameters::default_values()) const
   {
-    return m_core.template distances_from_each_source<ConcurrencyTag>(sources, distance_maps, np);
+    return m_core->template distances_from_each_source<ConcurrencyTag>(sources, distance_maps, np);
   }
 
   /*!
@@ -344,7 +345,7 @@ public:
   void compute_distances_from_each_source_set(const SourceSetRange& source_sets, const RowFunction& row,
                                               const NamedParameters& np = parameters::default_values()) const
   {
-    m_core.template distances_from_each_source_set<ConcurrencyTag>(source_sets, row, np);
+    m_core->template distances_from_each_source_set<ConcurrencyTag>(source_sets, row, np);
   }
 
   /*!
@@ -363,17 +364,29 @@ public:
   Shortest_path_tree<Geodesic_distance_solver>
   compute_shortest_path_tree(const SourceRange& sources, const NamedParameters& np = parameters::default_values()) const
   {
-    return m_core.template shortest_path_tree<ConcurrencyTag>(
+    return m_core->template shortest_path_tree<ConcurrencyTag>(
       sources, np, [this](auto& propagation, const auto& query, const auto& targets) {
         return Shortest_path_tree<Geodesic_distance_solver>(m_core, propagation, query, targets);
       });
   }
 
-  std::size_t number_of_vertices() const { return m_core.number_of_vertices(); }
+  /// Copies share the prepared mesh, which no query changes: a copy costs a pointer. Moving a
+  /// solver copies it too, so that the solver moved from answers as before; an assigned solver
+  /// answers as the one assigned. Not while another thread queries the solver assigned to.
+  Geodesic_distance_solver(const Geodesic_distance_solver&) = default;
+  Geodesic_distance_solver& operator=(const Geodesic_distance_solver&) = default;
+
+  /// Gives back the memory that queries keep for the next ones: the scratch of a propagation (a
+  /// few arrays over the vertices, faces and halfedges), one for each thread that queried at
+  /// once, which the next query makes again. The solver stays usable, from any thread, and its
+  /// results do not change. Shared by the copies of the solver.
+  void release_query_memory() const { m_core->release_query_memory(); }
+
+  std::size_t number_of_vertices() const { return m_core->number_of_vertices(); }
 
   /// the number of vertices where several fans of faces meet; they are kept as they are, and
   /// shortest paths may go from one fan to another through them
-  std::size_t number_of_non_manifold_vertices() const { return m_core.number_of_non_manifold_vertices(); }
+  std::size_t number_of_non_manifold_vertices() const { return m_core->number_of_non_manifold_vertices(); }
 
 private:
   friend class Shortest_path_tree<Geodesic_distance_solver>;
@@ -381,7 +394,7 @@ private:
   using Core = internal::Solver_core<Numbering, FT>;
 
   template <class NamedParameters>
-  static Core prepare(const TriangleMesh& tm, const NamedParameters& np)
+  static std::shared_ptr<const Core> prepare(const TriangleMesh& tm, const NamedParameters& np)
   {
     using Tag = typename Core::template Preparation_tag<NamedParameters>;
     const Vertex_index_map vim = get_initialized_vertex_index_map(tm, np);
@@ -394,10 +407,12 @@ private:
       vim, fim,
       parameters::choose_parameter<Traits>(parameters::get_parameter(np, internal_np::geom_traits)),
       mesh);
-    return Core(Tag(), Numbering(tm, vim, fim), std::move(mesh), order);
+    return std::make_shared<const Core>(Tag(), Numbering(tm, vim, fim), std::move(mesh), order);
   }
 
-  Core m_core; // the prepared mesh and the queries, on the numbers of the index maps
+  // the prepared mesh and the queries, on the numbers of the index maps; shared by the copies of
+  // the solver and by the shortest path trees it computed, never changed
+  std::shared_ptr<const Core> m_core;
 };
 
 } // namespace DGG_VTP_3

@@ -26,6 +26,7 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -46,7 +47,8 @@ namespace DGG_VTP_3 {
  * (`copy_of`), a path that goes from one sheet to another through a copy has two points in a row
  * at the copies, one in each sheet.
  *
- * It refers to the solver that computed it, which must outlive it; the mesh need not.
+ * It keeps the prepared mesh of the solver that computed it: it stays valid when that solver is
+ * destroyed, assigned or moved, and the mesh need not outlive it either.
  */
 template <class Solver>
 class Shortest_path_tree
@@ -168,9 +170,9 @@ private:
 
   static Index no_origin() { return Propagation::no_origin(); }
 
-  Shortest_path_tree(const Core& core, Propagation& propagation, const typename Core::Query& query,
+  Shortest_path_tree(std::shared_ptr<const Core> core, Propagation& propagation, const typename Core::Query& query,
                      const std::vector<Place>& places)
-    : m_core(&core)
+    : m_core(std::move(core))
     , m_distance(propagation.distances())
     , m_origin(propagation.origins())
     , m_nearest(internal::nearest_sources(m_origin, no_origin()))
@@ -274,7 +276,7 @@ private:
     return out;
   }
 
-  const Core* m_core;                     // the solver's mesh and numbering
+  std::shared_ptr<const Core> m_core;     // the solver's mesh and numbering
   std::vector<Computation_FT> m_distance; // per vertex
   std::vector<Index> m_origin;            // per vertex: the pseudo-source of its path
   std::vector<std::size_t> m_nearest;     // per vertex: the number of its nearest source, or -1

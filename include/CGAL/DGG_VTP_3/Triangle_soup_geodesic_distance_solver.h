@@ -31,6 +31,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -127,7 +128,7 @@ public:
   Propagation_statistics compute_distances(const Source& source, VertexDistanceMap distances,
                                            const NamedParameters& np = parameters::default_values()) const
   {
-    return m_core.template distances_to_nearest_source<ConcurrencyTag>(std::vector<Source>(1, source), distances, np);
+    return m_core->template distances_to_nearest_source<ConcurrencyTag>(std::vector<Source>(1, source), distances, np);
   }
 
   /// as `Geodesic_distance_solver::compute_distances_to_nearest_source()`
@@ -136,7 +137,7 @@ public:
   Propagation_statistics compute_distances_to_nearest_source(const SourceRange& sources, VertexDistanceMap distances,
                                                              const NamedParameters& np = parameters::default_values()) const
   {
-    return m_core.template distances_to_nearest_source<ConcurrencyTag>(sources, distances, np);
+    return m_core->template distances_to_nearest_source<ConcurrencyTag>(sources, distances, np);
   }
 
   /// as `Geodesic_distance_solver::compute_distances_from_each_source()`
@@ -146,7 +147,7 @@ public:
   compute_distances_from_each_source(const VertexRange& sources, const VertexDistanceMapRange& distance_maps,
                                      const NamedParameters& np = parameters::default_values()) const
   {
-    return m_core.template distances_from_each_source<ConcurrencyTag>(sources, distance_maps, np);
+    return m_core->template distances_from_each_source<ConcurrencyTag>(sources, distance_maps, np);
   }
 
   /// as `Geodesic_distance_solver::compute_distances_from_each_source_set()`, `distances[i]`
@@ -156,7 +157,7 @@ public:
   void compute_distances_from_each_source_set(const SourceSetRange& source_sets, const RowFunction& row,
                                               const NamedParameters& np = parameters::default_values()) const
   {
-    m_core.template distances_from_each_source_set<ConcurrencyTag>(source_sets, row, np);
+    m_core->template distances_from_each_source_set<ConcurrencyTag>(source_sets, row, np);
   }
 
   /// as `Geodesic_distance_solver::compute_shortest_path_tree()`
@@ -165,24 +166,36 @@ public:
   Shortest_path_tree<Triangle_soup_geodesic_distance_solver>
   compute_shortest_path_tree(const SourceRange& sources, const NamedParameters& np = parameters::default_values()) const
   {
-    return m_core.template shortest_path_tree<ConcurrencyTag>(
+    return m_core->template shortest_path_tree<ConcurrencyTag>(
       sources, np, [this](auto& propagation, const auto& query, const auto& targets) {
         return Shortest_path_tree<Triangle_soup_geodesic_distance_solver>(m_core, propagation, query, targets);
       });
   }
 
+  /// Copies share the prepared mesh, which no query changes: a copy costs a pointer. Moving a
+  /// solver copies it too, so that the solver moved from answers as before; an assigned solver
+  /// answers as the one assigned. Not while another thread queries the solver assigned to.
+  Triangle_soup_geodesic_distance_solver(const Triangle_soup_geodesic_distance_solver&) = default;
+  Triangle_soup_geodesic_distance_solver& operator=(const Triangle_soup_geodesic_distance_solver&) = default;
+
+  /// Gives back the memory that queries keep for the next ones: the scratch of a propagation (a
+  /// few arrays over the vertices, faces and halfedges), one for each thread that queried at
+  /// once, which the next query makes again. The solver stays usable, from any thread, and its
+  /// results do not change. Shared by the copies of the solver.
+  void release_query_memory() const { m_core->release_query_memory(); }
+
   /// the number of points
-  std::size_t number_of_vertices() const { return m_core.number_of_vertices(); }
+  std::size_t number_of_vertices() const { return m_core->number_of_vertices(); }
 
   /// as `Geodesic_distance_solver::number_of_non_manifold_vertices()`
-  std::size_t number_of_non_manifold_vertices() const { return m_core.number_of_non_manifold_vertices(); }
+  std::size_t number_of_non_manifold_vertices() const { return m_core->number_of_non_manifold_vertices(); }
 
 private:
   friend class Shortest_path_tree<Triangle_soup_geodesic_distance_solver>;
   using Core = internal::Solver_core<internal::Index_numbering, FT>;
 
   template <class PointRange, class TriangleRange, class NamedParameters>
-  static Core prepare(const PointRange& points, const TriangleRange& triangles, const NamedParameters& np)
+  static std::shared_ptr<const Core> prepare(const PointRange& points, const TriangleRange& triangles, const NamedParameters& np)
   {
     using Point = typename std::iterator_traits<decltype(std::begin(points))>::value_type;
     using Tag = typename Core::template Preparation_tag<NamedParameters>;
@@ -202,10 +215,13 @@ private:
         internal::copy_groups(parameters::get_parameter(np, internal_np::copy_of_t()), mesh.number_of_vertices(), at),
         mesh);
     }
-    return Core(Tag(), internal::Index_numbering(mesh.number_of_vertices(), mesh.number_of_faces()), std::move(mesh), order);
+    return std::make_shared<const Core>(Tag(), internal::Index_numbering(mesh.number_of_vertices(), mesh.number_of_faces()),
+                                        std::move(mesh), order);
   }
 
-  Core m_core; // the prepared soup and the queries
+  // the prepared soup and the queries; shared by the copies of the solver and by the shortest
+  // path trees it computed, never changed
+  std::shared_ptr<const Core> m_core;
 };
 
 } // namespace DGG_VTP_3

@@ -28,7 +28,9 @@ namespace internal {
 // per-halfedge arrays are allocated once per thread that queries, not once per query, and a query
 // resets them in the time of what the previous one touched (see Window_propagation). The const
 // queries stay safe to run from many threads at once: a propagation is in one query at a time.
-// A propagation whose run threw is not given back (see Window_propagation::reusable()).
+// A propagation whose run threw is not given back (see Window_propagation::reusable()). The pool
+// holds at most as many as queries ran at once; clear() frees them. It is not copied: its
+// propagations refer to the mesh of the solver that owns it.
 template <class Propagation>
 class Propagation_pool
 {
@@ -43,7 +45,7 @@ public:
     ~Lease()
     {
       if(m_propagation && m_propagation->reusable())
-        m_pool->give_back(std::move(m_propagation));
+        m_pool->give_back(m_propagation);
     }
     Propagation& operator*() const { return *m_propagation; }
     Propagation* operator->() const { return m_propagation.get(); }
@@ -54,9 +56,8 @@ public:
   };
 
   Propagation_pool() = default;
-  // a copy of a solver starts with no propagation of its own
-  Propagation_pool(const Propagation_pool&) {}
-  Propagation_pool& operator=(const Propagation_pool&) { return *this; }
+  Propagation_pool(const Propagation_pool&) = delete;
+  Propagation_pool& operator=(const Propagation_pool&) = delete;
 
   // a free propagation, or a new one from `make()`
   template <class Make>
@@ -74,11 +75,29 @@ public:
     return Lease(*this, make());
   }
 
-private:
-  void give_back(std::unique_ptr<Propagation> p)
+  // the free propagations destroyed; those of queries running now come back at their end
+  void clear()
   {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    m_free.push_back(std::move(p));
+    std::vector<std::unique_ptr<Propagation>> freed;
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      freed.swap(m_free);
+    }
+  }
+
+private:
+  // From a destructor: nothing may throw. A propagation that finds no room (the list cannot
+  // grow) is destroyed instead, which only costs the next query its allocation.
+  void give_back(std::unique_ptr<Propagation>& p) noexcept
+  {
+    try
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_free.push_back(std::move(p));
+    }
+    catch(...)
+    {
+    }
   }
 
   std::mutex m_mutex;

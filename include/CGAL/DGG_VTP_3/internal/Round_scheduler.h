@@ -18,6 +18,7 @@
 #include <CGAL/DGG_VTP_3/internal/Window.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/for_each.h>
 
 #include <algorithm>
@@ -88,19 +89,27 @@ public:
     , m_committed(number_of_vertices, Number_type_math<FT>::infinity())
     , m_outbox(partition.size(), std::vector<Outbox>(partition.size()))
     , m_recipients(partition.size())
-    , m_senders(partition.size())
+    , m_inbox(partition.size())
     , m_receiving(partition.size(), 0)
     , m_awake(partition.size(), 0)
   {}
 
-  // for the next propagation: no patch awake, every distance committed +infinity but those of
-  // the vertices `reached`, which the last one set
+  // for the next propagation: no patch awake, no message waiting (a propagation that threw may
+  // have left some), every distance committed +infinity but those of the vertices `reached`,
+  // which the last one set
   void reset(const std::vector<Index>& reached)
   {
     for(Index v : reached)
       m_committed[v] = Number_type_math<FT>::infinity();
-    for(Index p : m_woken)
+    for(Index p : m_woken) // only a woken patch has sent or received anything
+    {
+      for(Index q : m_recipients[p])
+        m_outbox[p][q] = Outbox();
+      m_recipients[p].clear();
+      m_inbox[p].clear();
+      m_receiving[p] = 0;
       m_awake[p] = 0;
+    }
     m_woken.clear();
   }
 
@@ -174,6 +183,16 @@ public:
       deliver<ConcurrencyTag>(propagation, active);
       propagation.report_progress(); // between rounds: on the caller's thread, never in a patch's
     }
+    CGAL_assertion(all_delivered());
+  }
+
+  // whether no message waits: true after deliver_now() and run()
+  bool all_delivered() const
+  {
+    for(Index p : m_woken)
+      if(!m_recipients[p].empty())
+        return false;
+    return true;
   }
 
   // delivers what was handed off outside the rounds (the sources' first windows and distances)
@@ -198,9 +217,14 @@ private:
   };
 
   // The outboxes of the round, each patch receiving from the others in the order of their ids,
-  // then the distances of the border vertices that other patches read
+  // then the distances of the border vertices that other patches read. What a patch receives may
+  // make it send more (a distance relayed to a vertex's copies in other patches): those messages
+  // are delivered in the same way, wave after wave, until none is left, so that the round ends
+  // with every outbox empty, whatever early termination does next. A wave's messages are taken
+  // out of the outboxes before it starts: the receivers fill outboxes of their own meanwhile,
+  // which no other thread reads, and each receiver's order depends on the data only.
   template <class ConcurrencyTag, class Propagation>
-  void deliver(Propagation& propagation, const std::vector<Index>& active)
+  void deliver(Propagation& propagation, const std::vector<Index>& ran)
   {
     std::vector<Index> receivers;
     const auto receive = [&](Index q) {
@@ -210,48 +234,53 @@ private:
         receivers.push_back(q);
       }
     };
-    for(Index p : active)
+    for(Index p : ran) // their border vertices may have changed, even with nothing to receive
       receive(p);
-    for(Index p : m_woken) // only a woken patch has sent anything
-    {
-      for(Index q : m_recipients[p])
-      {
-        receive(q);
-        m_senders[q].push_back(p);
-      }
-      m_recipients[p].clear();
-    }
-    for(Index q : receivers)
-      wake(q);
     const std::vector<FT>& distance = propagation.distances();
-    CGAL::for_each<ConcurrencyTag>(receivers, [&](Index q) {
-      for(Index sender : m_senders[q])
+    for(;;)
+    {
+      for(Index p : m_woken) // only a woken patch has sent anything
       {
-        Outbox& box = m_outbox[sender][q];
-        for(const Window_message& m : box.windows)
-          propagation.receive(q, m);
-        for(const Relax_message& m : box.relaxations)
-          propagation.receive(q, m);
-        for(const Face_message& m : box.faces)
-          propagation.receive(q, m);
-        for(const Relay_message& m : box.relays) // after the distances the windows gave them
-          propagation.receive(q, m);
-        box = Outbox(); // its memory back: some pair of patches talks in a few rounds only
+        for(Index q : m_recipients[p])
+        {
+          receive(q);
+          m_inbox[q].push_back(std::move(m_outbox[p][q]));
+          m_outbox[p][q] = Outbox(); // its memory goes with the messages: some pairs talk in a few rounds only
+        }
+        m_recipients[p].clear();
       }
-      m_senders[q].clear();
-      m_receiving[q] = 0;
-      // only the patches that ran or received in this round changed their vertices' distances
-      for(const Index* v = m_partition.border_begin(q); v != m_partition.border_end(q); ++v)
-        m_committed[*v] = distance[*v];
-      return true;
-    });
+      if(receivers.empty())
+        break;
+      for(Index q : receivers)
+        wake(q);
+      CGAL::for_each<ConcurrencyTag>(receivers, [&](Index q) {
+        for(const Outbox& box : m_inbox[q]) // in the order of the senders
+        {
+          for(const Window_message& m : box.windows)
+            propagation.receive(q, m);
+          for(const Relax_message& m : box.relaxations)
+            propagation.receive(q, m);
+          for(const Face_message& m : box.faces)
+            propagation.receive(q, m);
+          for(const Relay_message& m : box.relays) // after the distances the windows gave them
+            propagation.receive(q, m);
+        }
+        m_inbox[q].clear();
+        m_receiving[q] = 0;
+        // only the patches that ran or received changed their vertices' distances
+        for(const Index* v = m_partition.border_begin(q); v != m_partition.border_end(q); ++v)
+          m_committed[*v] = distance[*v];
+        return true;
+      });
+      receivers.clear();
+    }
   }
 
   const Patch_partition<FT>& m_partition;
   std::vector<FT> m_committed;                 // per border vertex: its distance at the round's start
   std::vector<std::vector<Outbox>> m_outbox;   // per sender, per receiver
   std::vector<std::vector<Index>> m_recipients; // per sender: the patches whose outbox is not empty
-  std::vector<std::vector<Index>> m_senders;   // per receiver: the patches whose outbox to it is not empty
+  std::vector<std::vector<Outbox>> m_inbox;    // per receiver: its senders' outboxes in this wave
   std::vector<char> m_receiving;               // per patch: in this round's delivery
   std::vector<char> m_awake;                   // per patch: in m_woken
   std::vector<Index> m_woken;                  // see woken()

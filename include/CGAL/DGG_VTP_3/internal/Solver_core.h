@@ -92,6 +92,13 @@ public:
     });
   }
 
+  // one per solver and its copies (they share it): its propagations refer to its mesh
+  Solver_core(const Solver_core&) = delete;
+  Solver_core& operator=(const Solver_core&) = delete;
+
+  // the propagations kept for the next queries freed (see Propagation_pool)
+  void release_query_memory() const { m_pool.clear(); }
+
   std::size_t number_of_vertices() const { return m_numbering.number_of_vertices(); }
   std::size_t number_of_non_manifold_vertices() const { return m_mesh.number_of_non_manifold_vertices(); }
   const Mesh& mesh() const { return m_mesh; }

@@ -124,8 +124,13 @@ struct Tuning
   // ---- patches and rounds (Parallel_tag, and memory locality for any tag) --------------------
 
   // Patches have at least this many faces, and a mesh at most this many patches; their number
-  // depends on the mesh only, never on the number of threads.
+  // depends on the mesh only, never on the number of threads. The fuzzer makes patches of a few
+  // faces (CGAL_DGG_VTP_3_MIN_PATCH_FACES), so that its small meshes run rounds across patches.
+#ifdef CGAL_DGG_VTP_3_MIN_PATCH_FACES
+  static std::size_t min_patch_faces() { return CGAL_DGG_VTP_3_MIN_PATCH_FACES; }
+#else
   static std::size_t min_patch_faces() { return 2048; }
+#endif
   static std::size_t max_patches() { return 256; }
 
   // A round pops vertices up to this many mean edge lengths beyond the nearest: on bunny_1M
