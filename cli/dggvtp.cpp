@@ -71,6 +71,15 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          repeatable; the propagation stops as for --target
   --paths FILE           write the paths of --path-to into an OBJ file: per path a comment, its
                          points as v lines from the target to the source, and one l line
+  --fps K                farthest-point sampling of K vertices: the --source vertex (default 0),
+                         then each time the vertex farthest from those chosen (the smallest
+                         index on ties; unreachable vertices first; with --epsilon E, one within
+                         (1 + E) of the farthest), printed on standard output one a line; the
+                         field (--output, --error-bounds) is the distance to the nearest sample
+                         and --labels the number of that sample, in every output format (a PLY
+                         or VTK file colours the samples' cells). Each sample costs its cell,
+                         not a whole field. Not with --source-point, --target, --path-to,
+                         --max-distance
   --max-distance D       stop the propagation at distance D >= 0 (inf allowed): vertices, targets
                          and paths farther away are unreached (inf)
   --exact                exact distances (VTP algorithm); the default
@@ -203,6 +212,7 @@ struct Options : dggvtp::Propagation_options
   std::string output_format; // empty: by each file's extension
   std::string paths;
   std::string stats;
+  std::size_t fps = 0; // --fps K: the number of samples (0: none)
   std::size_t isolines = 0;
   std::vector<double> isolines_at;
   std::string isolines_output;
@@ -223,7 +233,7 @@ Options parse_options(int argc, char** argv)
   const auto places_of = [&](const std::string& option) -> std::vector<Place>& {
     return option == "--source" ? options.sources : option == "--target" ? options.targets : options.path_targets;
   };
-  dggvtp::Single_value_options single_value{"--max-distance", "--epsilon", "--precision", "--threads", "--output", "--error-bounds",
+  dggvtp::Single_value_options single_value{"--fps", "--max-distance", "--epsilon", "--precision", "--threads", "--output", "--error-bounds",
                                             "--labels", "--output-format", "--paths", "--stats", "--isolines",
                                             "--isolines-at", "--isolines-output"};
   dggvtp::Argument_reader words(argc, argv, {{"-h", "--help"}, {"-o", "--output"}, {"-s", "--source"}}, usage_text);
@@ -287,6 +297,12 @@ Options parse_options(int argc, char** argv)
       if(file.empty())
         throw Usage_error(arg + " needs a file name ('-' for standard output)");
     }
+    else if(arg == "--fps")
+    {
+      options.fps = parse_number<std::size_t>(arg, value());
+      if(options.fps == 0)
+        throw Usage_error("--fps needs a count >= 1");
+    }
     else if(arg == "--isolines")
     {
       options.isolines = parse_number<std::size_t>(arg, value());
@@ -323,6 +339,13 @@ Options parse_options(int argc, char** argv)
   if(options.mesh.empty())
     throw Usage_error("no MESH given");
   options.check();
+  if(options.fps > 0 && (options.sources.size() > 1 || options.has_points() || options.stops_early() ||
+                         std::isfinite(options.max_distance)))
+    throw Usage_error("--fps samples from one vertex (--source N) over the whole field: not with several sources, "
+                      "--source-point, --target, --path-to or --max-distance");
+  if(options.fps > 0 && (options.output == "-" || options.labels == "-" || options.error_bounds == "-" ||
+                         options.isolines_output == "-"))
+    throw Usage_error("--fps prints the samples on standard output: give the other outputs a file");
   if(options.sources.empty())
     options.sources.push_back(Place());
   if(options.stops_early() && !(options.output.empty() && options.labels.empty() && options.error_bounds.empty()))
@@ -440,6 +463,7 @@ struct Run
   std::vector<double> target_distances; // per --target
   std::vector<double> path_lengths;     // per --path-to
   std::vector<Polyline> paths;          // per --path-to: from the target to the source; empty if unreached
+  std::vector<std::size_t> samples;     // with --fps: the file vertices chosen, in order
   std::vector<std::string> warnings;    // for standard error, unless --quiet
 };
 
@@ -503,7 +527,7 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
 
   std::vector<FT> d(solver.number_of_vertices());
   std::vector<FT> lower(options.error_bounds.empty() ? 0 : d.size());
-  std::vector<std::size_t> nearest(options.labels.empty() ? 0 : d.size());
+  std::vector<std::size_t> nearest(options.labels.empty() && options.fps == 0 ? 0 : d.size());
   std::vector<FT> at_targets;
   using Tree = decltype(solver.compute_shortest_path_tree(q.sources));
   std::optional<Tree> tree;
@@ -521,6 +545,24 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
       d[v] = tree->distance(v);
     for(std::size_t k = 0; k < q.targets.size(); ++k)
       at_targets.push_back(tree->target_distance(k));
+  }
+  else if(options.fps > 0)
+  {
+    if constexpr(std::is_same<Element, std::size_t>::value) // no points with --fps
+    {
+      const auto sample = [&](const auto& np) {
+        solver.template farthest_point_sampling<Tag>(options.fps, std::back_inserter(run.samples),
+                                                     DP::first_sample(q.sources[0], DP::distance_map(CGAL::make_property_map(d), np)));
+      };
+      const auto np_fps = CGAL::parameters::accuracy(options.epsilon).callback(progress);
+      if(lower.empty())
+        sample(DP::nearest_source_map(CGAL::make_property_map(nearest), np_fps));
+      else
+        sample(DP::nearest_source_map(CGAL::make_property_map(nearest),
+                                      DP::lower_bound_map(CGAL::make_property_map(lower), np_fps)));
+      for(std::size_t& v : run.samples)
+        v = soup.file_vertex_of[v];
+    }
   }
   else if(!options.targets.empty())
     run.statistics = solver.template compute_distances_to_nearest_source<Tag>(
@@ -542,7 +584,11 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
     line.reset(); // its last line ends before anything else is printed
   }
 
-  const std::vector<long long> label = dggvtp::finish_sources(q, nearest, d.data()); // per solver vertex
+  // per solver vertex: the number of the source option, or of the sample
+  std::vector<long long> label = dggvtp::finish_sources(q, nearest, d.data());
+  if(options.fps > 0)
+    std::transform(nearest.begin(), nearest.end(), label.begin(),
+                   [](std::size_t k) { return k == std::size_t(-1) ? -1LL : static_cast<long long>(k); });
 
   const auto target_distance = [&](const auto& t) {
     return double(t.vertices.empty() ? at_targets[t.point] : d[dggvtp::nearest_copy(t.vertices, d)]);
@@ -867,7 +913,9 @@ int run_main(int argc, char** argv)
                                                     : options.isolines_at);
     file.commit();
   }
-  std::string lines; // the targets' distances, then the paths' lengths
+  std::string lines; // the samples, or the targets' distances, then the paths' lengths
+  for(std::size_t v : run.samples)
+    lines += std::to_string(v) + "\n";
   for(const auto* values : {&run.target_distances, &run.path_lengths})
     for(double d : *values)
       lines += number_text(d) + "\n";
@@ -914,13 +962,16 @@ int run_main(int argc, char** argv)
   }
   if(!options.quiet)
   {
-    const bool stdout_taken = options.output == "-" || options.labels == "-" || options.isolines_output == "-" || options.stops_early();
+    const bool stdout_taken = options.output == "-" || options.labels == "-" || options.isolines_output == "-" ||
+                              options.stops_early() || options.fps > 0;
     std::ostream& out = stdout_taken ? std::cerr : std::cout;
     std::string sources = options.sources.size() == 1 && !options.sources[0].is_point
                             ? "source " + std::to_string(options.sources[0].vertex) : "sources";
     if(sources == "sources")
       for(std::size_t k = 0; k < options.sources.size(); ++k)
         sources += (k == 0 ? " " : ", ") + place_text(options.sources[k]);
+    if(options.fps > 0)
+      sources = std::to_string(options.fps) + " samples from vertex " + std::to_string(options.sources[0].vertex);
     out << "dggvtp: " << options.mesh << ": " << soup.file_vertices << " vertices, " << run.faces << " faces\n"
         << "  " << sources << ", "
         << (options.epsilon > 0. ? "DGG-VTP epsilon " + std::to_string(options.epsilon) : std::string("exact (VTP)"))

@@ -17,8 +17,9 @@
 //  3. each rank computes its share of the missing rows (row i of the missing ones goes to rank
 //     i mod R), spread over its threads; each row is written at its offset in the checkpoint's
 //     copy of the output (MPI-IO under MPI), made durable, and only then recorded as done;
-//     fps:K is sequential (each source depends on the previous rows): rank 0 computes every row,
-//     each propagation on its threads, and the other ranks wait;
+//     fps:K's sources are chosen first, by every rank (the same bits), as the library samples
+//     them (each added to the field of those before: a few whole fields in all), then computed as
+//     a list;
 //  4. rank 0 checks that every row is recorded, renames the file to the output and removes the
 //     checkpoint.
 // The bytes of a row do not depend on who computes it: each is the same sequential propagation
@@ -97,7 +98,8 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
                          all: every vertex, in order; fps:K: K vertices by farthest-point
                          sampling (vertex 0 first, then each time the vertex farthest from those
                          chosen, the smallest index on ties; unreachable vertices are the
-                         farthest), sequential: rank 0 computes every row
+                         farthest; with --epsilon E, one within (1 + E) of the farthest), chosen
+                         first at the cost of a few whole fields, then computed as a list
   --output OUT.npy       the .npy file (C order, shape (sources, vertices)); it appears only
                          when every row is in it
   --error-bounds B.npy   a second .npy of the same shape and dtype: per row and vertex a certified
@@ -113,14 +115,14 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
                          source k and their distances, the source itself as an explicit 0, the
                          values `dggvtp --source N --max-distance D` prints (not inf); the memory
                          is in proportion to them. The rows are held in memory and written at the
-                         end, by one process: no --checkpoint (a killed run starts over), no fps:K,
-                         no mpirun with more than one process
+                         end, by one process: no --checkpoint (a killed run starts over), no
+                         mpirun with more than one process
   --exact                exact distances (VTP algorithm); the default
   --epsilon E            DGG-VTP with accuracy E in [0, 1] (E = 0 is --exact)
   --precision P          double (default) or float: the number type of the computation
   --threads T            threads per process, 0 = all cores (default 1): the preparation runs on
-                         them, and the sources are shared among them (fps:K: each propagation
-                         runs on them); same bytes for any T
+                         them, and the sources are shared among them (fps:K's sampling runs on
+                         them); same bytes for any T
   --checkpoint DIR       where the rows written so far and the record of the done rows live
                          (default OUT.npy.checkpoint); the same command run again after a kill
                          computes only the missing rows; a different command (mesh, epsilon,
@@ -291,8 +293,6 @@ Options parse_options(int argc, char** argv)
     if(options.checkpoint_given)
       throw Usage_error("--checkpoint does not combine with --max-distance: the rows, of sizes known only once "
                         "computed, are held in memory and written at the end (a killed run starts over)");
-    if(options.sources.compare(0, 4, "fps:") == 0)
-      throw Usage_error("fps:K chooses each source from whole rows: it does not combine with --max-distance");
     if(!options.error_bounds.empty())
       throw Usage_error("--error-bounds writes dense rows: it does not combine with --max-distance");
   }
@@ -367,9 +367,9 @@ struct Fnv1a
 
 struct Sources
 {
-  bool farthest_point = false;       // fps:K: chosen while the rows are computed
+  bool farthest_point = false;       // fps:K: chosen once the solver is prepared
   std::size_t rows = 0;              // number of sources, rows of the output
-  std::vector<std::size_t> vertices; // file vertex of each row (fps: the ones chosen so far)
+  std::vector<std::size_t> vertices; // file vertex of each row (fps:K: empty until chosen)
   std::string identity;              // what the fingerprint records of them
 };
 
@@ -429,17 +429,6 @@ Sources read_sources(const std::string& spec, std::size_t file_vertices)
   }
   sources.identity = "list of " + std::to_string(sources.rows) + " vertices, fnv1a64 " + hash.hex();
   return sources;
-}
-
-// Farthest-point sampling: the vertex not chosen yet whose distance to the nearest chosen source
-// is the largest (+infinity, unreachable, is the largest; the smallest index on ties).
-std::size_t farthest_vertex(const std::vector<double>& nearest, const std::vector<unsigned char>& chosen)
-{
-  std::size_t best = nearest.size();
-  for(std::size_t v = 0; v < nearest.size(); ++v)
-    if(!chosen[v] && (best == nearest.size() || nearest[v] > nearest[best]))
-      best = v;
-  return best;
 }
 
 // =============================================================================================
@@ -512,54 +501,6 @@ bool read_whole_file(const std::string& path, std::string& out)
   return !in.bad();
 }
 
-// The state of farthest-point sampling after the rows made durable: the sources chosen (one per
-// done row) and, per file vertex, the distance to the nearest of them.
-struct Fps_state
-{
-  std::vector<std::size_t> chosen;
-  std::vector<double> nearest;
-
-  std::string bytes() const
-  {
-    std::string out = "dggvtp-batch fps 1\n";
-    const std::uint64_t sizes[2] = {chosen.size(), nearest.size()};
-    out.append(reinterpret_cast<const char*>(sizes), sizeof sizes);
-    for(std::size_t v : chosen)
-    {
-      const std::uint64_t w = v;
-      out.append(reinterpret_cast<const char*>(&w), sizeof w);
-    }
-    out.append(reinterpret_cast<const char*>(nearest.data()), nearest.size() * sizeof(double));
-    return out;
-  }
-  // false if `bytes` is not a state of `vertices` vertices and at most `rows` rows
-  bool read(const std::string& bytes, std::size_t vertices, std::size_t rows)
-  {
-    const std::string magic = "dggvtp-batch fps 1\n";
-    std::uint64_t sizes[2];
-    if(bytes.compare(0, magic.size(), magic) != 0 || bytes.size() < magic.size() + sizeof sizes)
-      return false;
-    std::memcpy(sizes, bytes.data() + magic.size(), sizeof sizes);
-    if(sizes[0] > rows || sizes[1] != vertices ||
-       bytes.size() != magic.size() + sizeof sizes + sizes[0] * 8 + sizes[1] * sizeof(double))
-      return false;
-    const char* p = bytes.data() + magic.size() + sizeof sizes;
-    chosen.resize(sizes[0]);
-    for(auto& v : chosen)
-    {
-      std::uint64_t w;
-      std::memcpy(&w, p, 8);
-      p += 8;
-      if(w >= vertices)
-        return false;
-      v = std::size_t(w);
-    }
-    nearest.resize(sizes[1]);
-    std::memcpy(nearest.data(), p, nearest.size() * sizeof(double));
-    return true;
-  }
-};
-
 struct Checkpoint
 {
   std::string directory;
@@ -571,12 +512,11 @@ struct Checkpoint
     return bounds ? std::vector<std::string>{data(), this->bounds()} : std::vector<std::string>{data()};
   }
   std::string fingerprint() const { return directory + "/fingerprint"; }
-  std::string fps_state() const { return directory + "/fps_state"; }
   std::string record(int rank) const { return directory + "/done." + std::to_string(rank); }
   // the names a checkpoint directory holds (and temporary files of them)
   static bool is_own_name(const std::string& name)
   {
-    for(const char* prefix : {"rows.npy", "bounds.npy", "fingerprint", "fps_state", "done."})
+    for(const char* prefix : {"rows.npy", "bounds.npy", "fingerprint", "done."})
       if(name.compare(0, std::strlen(prefix), prefix) == 0)
         return true;
     return false;
@@ -586,7 +526,6 @@ struct Checkpoint
 struct Resume
 {
   std::vector<unsigned char> done; // per row
-  Fps_state fps;                   // fps:K only
   std::vector<std::string> notes;  // warnings for the user
   dggvtp::Directory_lock lock;     // held by rank 0 for the whole run
 };
@@ -653,19 +592,7 @@ Resume open_checkpoint(const Checkpoint& checkpoint, const std::string& fingerpr
       else
       {
         fresh = false;
-        if(sources.farthest_point)
-        {
-          std::string bytes;
-          if(read_whole_file(checkpoint.fps_state(), bytes) && !resume.fps.read(bytes, file_vertices, sources.rows))
-          {
-            resume.notes.push_back("the checkpoint's farthest-point state is damaged: computing every row again");
-            resume.fps = Fps_state();
-          }
-          for(std::size_t r = 0; r < resume.fps.chosen.size(); ++r)
-            resume.done[r] = 1;
-        }
-        else
-          dggvtp::read_records(checkpoint.directory, resume.done);
+        dggvtp::read_records(checkpoint.directory, resume.done);
       }
     }
     else
@@ -689,7 +616,6 @@ Resume open_checkpoint(const Checkpoint& checkpoint, const std::string& fingerpr
       if(Checkpoint::is_own_name(name))
         std::remove((checkpoint.directory + "/" + name).c_str());
     resume.done.assign(sources.rows, 0);
-    resume.fps = Fps_state();
     // the data files: the header, then zeros (a sparse file) where the rows will go
     for(const std::string& path : checkpoint.row_files(bounds))
     {
@@ -738,8 +664,8 @@ struct Row_values
   std::vector<double> distances, bounds;
 };
 
-// computes the row of one source; with `parallel`, the propagation runs on the threads (same bits)
-using Row_function = std::function<Row_values(std::size_t file_vertex, bool parallel)>;
+// the file vertices of fps:K (`k`), sampled on `threads` threads (0 = all cores; the same bits for any number)
+using Sample_function = std::function<std::vector<std::size_t>(std::size_t k, long threads)>;
 // computes the rows of several sources, each one sequential propagation, on `threads` threads (0 =
 // all cores), and hands each to `done` (from any thread) with its number in `file_vertices`
 template <class Row>
@@ -748,7 +674,7 @@ using Rows_function =
 
 struct Prepared
 {
-  Row_function row;
+  Sample_function sample;
   Rows_function<Row_values> rows;
   Rows_function<dggvtp::Sparse_row> local_rows; // --max-distance: the vertices within it, in the time of those
   std::size_t faces = 0;
@@ -789,23 +715,26 @@ Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, doub
       r.bounds = dggvtp::certified_errors(r.distances, dggvtp::file_vertex_distances(*soup, *lower));
     return r;
   };
-  prepared.row = [soup, solver, np, bounds, values](std::size_t file_vertex, bool parallel) {
-    std::vector<FT> d((*solver)->number_of_vertices()), lower(bounds ? d.size() : 0);
-    const auto sources = dggvtp::solver_vertices_of(*soup, file_vertex);
-    const auto run = [&](auto tag) {
-      using Tag = decltype(tag);
-      if(bounds)
-        (*solver)->template compute_distances_to_nearest_source<Tag>(
-          sources, CGAL::make_property_map(d),
-          CGAL::DGG_VTP_3::parameters::lower_bound_map(CGAL::make_property_map(lower), np));
-      else
-        (*solver)->template compute_distances_to_nearest_source<Tag>(sources, CGAL::make_property_map(d), np);
-    };
-    if(parallel)
-      run(CGAL::Parallel_if_available_tag());
-    else
-      run(CGAL::Sequential_tag());
-    return values(d, bounds ? &lower : nullptr);
+  prepared.sample = [soup, solver, epsilon](std::size_t k, long threads) {
+    const std::vector<std::size_t> first = dggvtp::solver_vertices_of(*soup, 0);
+    if(first.empty())
+      throw Input_error("fps:K starts at vertex 0, which no face uses: give the sources as a FILE");
+    std::vector<std::size_t> samples;
+    try
+    {
+      dggvtp::with_threads(threads, [&](auto tag) {
+        (*solver)->template farthest_point_sampling<decltype(tag)>(
+          k, std::back_inserter(samples),
+          CGAL::DGG_VTP_3::parameters::first_sample(first[0], CGAL::parameters::accuracy(epsilon)));
+      });
+    }
+    catch(const std::invalid_argument& e) // more samples than the faces' vertices
+    {
+      throw Input_error("fps:" + std::to_string(k) + ": " + e.what());
+    }
+    for(std::size_t& v : samples)
+      v = soup->file_vertex_of[v];
+    return samples;
   };
   // the rows of `file_vertices`, each handed to `row` as the library gives it
   const auto each_row = [soup, solver, np](const std::vector<std::size_t>& file_vertices, long threads, const auto& row) {
@@ -1093,6 +1022,7 @@ struct Phase_one
   Prepared prepared;
   double seconds_load = 0.;   // reading the file
   double seconds_repair = 0.; // the input policy's repairs, if the soup needs them
+  double seconds_sample = 0.; // choosing the sources of fps:K
 };
 
 int run_main(dggvtp::Communicator& comm, int argc, char** argv)
@@ -1126,6 +1056,10 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
                          one.soup, options.epsilon, options.max_distance, threads, !options.error_bounds.empty());
     one.repairs = one.soup->repairs;
     one.seconds_repair = one.prepared.seconds_make_mesh;
+    const Clock::time_point t_sample = Clock::now();
+    if(one.sources.farthest_point)
+      one.sources.vertices = one.prepared.sample(one.sources.rows, threads);
+    one.seconds_sample = seconds_since(t_sample);
   });
   if(status != 0)
     return status;
@@ -1199,7 +1133,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
   double seconds_own = 0.;  // this rank's rows, without waiting for the others
   try
   {
-    std::atomic<std::size_t> durable(already_done); // fps and --max-distance: rows done, for the progress line
+    std::atomic<std::size_t> durable(already_done); // --max-distance: rows done, for the progress line
     if(options.local_matrix()) // one process (checked above), no checkpoint
     {
       local_rows.resize(sources.rows);
@@ -1212,69 +1146,6 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
       });
       computed = sources.rows;
       seconds_own = seconds_since(t_compute);
-    }
-    else if(sources.farthest_point)
-    {
-      if(root)
-      {
-        // sequential: each source is the farthest vertex from the rows before it
-        Fps_state& state = resume.fps;
-        std::vector<unsigned char> chosen(one.file_vertices, 0);
-        if(state.chosen.empty())
-          state.nearest.assign(one.file_vertices, std::numeric_limits<double>::infinity());
-        for(std::size_t v : state.chosen)
-          chosen[v] = 1;
-        // the state is saved after the rows it accounts for are durable: here, the copy taken
-        // when those rows were written
-        Fps_state durable_state;
-        Row_sink sink(
-          checkpoint.row_files(!options.error_bounds.empty()), comm.uses_mpi(), header.size(), row_size, 1.0,
-          [&](const std::vector<std::size_t>& rows) {
-            dggvtp::write_file_atomically(checkpoint.fps_state(), durable_state.bytes());
-            durable += rows.size();
-          },
-          kill_after);
-        std::optional<Progress> progress;
-        if(show_progress)
-          progress.emplace([&] { return durable.load(); }, sources.rows, already_done);
-        std::vector<std::vector<char>> bytes(2);
-        for(std::size_t r = state.chosen.size(); r < sources.rows; ++r)
-        {
-          const std::size_t v = r == 0 ? 0 : farthest_vertex(state.nearest, chosen);
-          Row_values values;
-          {
-#ifdef CGAL_LINKED_WITH_TBB
-            std::optional<tbb::global_control> limit;
-            if(threads > 0)
-              limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-#endif
-            values = one.prepared.row(v, threads != 1);
-          }
-          const std::vector<double>& row = values.distances;
-          unreachable.add(row.begin(), row.end());
-          chosen[v] = 1;
-          state.chosen.push_back(v);
-          for(std::size_t i = 0; i < row.size(); ++i)
-            state.nearest[i] = (std::min)(state.nearest[i], row[i]);
-          encode_row(row, options.dtype, bytes[0]);
-          encode_row(values.bounds, options.dtype, bytes[1]); // empty without --error-bounds
-          durable_state = state;
-          sink.write(r, bytes);
-          ++computed;
-        }
-        sink.flush();
-      }
-      seconds_own = seconds_since(t_compute);
-      comm.idle_barrier();
-      std::string chosen_bytes;
-      if(root)
-        for(std::size_t v : resume.fps.chosen)
-          chosen_bytes += std::to_string(v) + "\n";
-      comm.broadcast(chosen_bytes);
-      std::istringstream in(chosen_bytes);
-      sources.vertices.clear();
-      for(std::size_t v; in >> v;)
-        sources.vertices.push_back(v);
     }
     else
     {
@@ -1342,7 +1213,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
       dggvtp::write_file_atomically(options.output, [&](const dggvtp::Npz_writer::Sink& write) {
         dggvtp::write_csr_npz(local_rows, one.file_vertices, options.dtype, write);
       });
-    else if(!sources.farthest_point)
+    else
       in_checkpoint(options, [&] {
         std::vector<unsigned char> done(sources.rows, 0);
         dggvtp::read_records(checkpoint.directory, done);
@@ -1404,14 +1275,14 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
                   "{\"mesh\": %s, \"vertices\": %zu, \"faces\": %zu, \"rows\": %zu, \"rows_computed\": %zu, "
                   "\"rows_resumed\": %zu, \"ranks\": %d, \"threads\": %ld, \"epsilon\": %.17g, \"precision\": \"%s\", "
                   "\"dtype\": \"%s\", \"seconds_load\": %.6f, \"seconds_repair\": %.6f, \"seconds_prepare\": %.6f, "
-                  "\"seconds_compute\": %.6f, \"seconds_write\": %.6f, \"seconds_total\": %.6f, "
+                  "\"seconds_sample\": %.6f, \"seconds_compute\": %.6f, \"seconds_write\": %.6f, \"seconds_total\": %.6f, "
                   "\"threads_per_stage\": {\"load\": 1, \"repair\": 1, \"prepare\": %zu, \"compute\": %zu, \"write\": 1}, "
                   "\"peak_rss_mb\": [%s], \"cpu_seconds\": [%s], "
                   "\"seconds_compute_per_rank\": [%s]}\n",
                   json_string(options.mesh).c_str(), one.file_vertices, one.prepared.faces, sources.rows,
                   computed_total, already_done, comm.size(), options.threads, options.epsilon,
                   options.precision.c_str(), dtype, one.seconds_load, one.seconds_repair, one.prepared.seconds_prepare,
-                  seconds_compute, seconds_write, seconds_total, one.prepared.threads, one.prepared.threads,
+                  one.seconds_sample, seconds_compute, seconds_write, seconds_total, one.prepared.threads, one.prepared.threads,
                   rss_list.c_str(), json_list(cpu, "%.3f").c_str(),
                   json_list(compute_seconds, "%.3f").c_str());
     };
@@ -1431,7 +1302,9 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
               << (already_done > 0 ? " (" + std::to_string(already_done) + " were done before)" : std::string()) << "\n"
               << "  load " << one.seconds_load << " s, "
               << (one.seconds_repair > 0. ? "repair " + std::to_string(one.seconds_repair) + " s, " : std::string())
-              << "prepare " << one.prepared.seconds_prepare << " s, rows " << seconds_compute << " s, write "
+              << "prepare " << one.prepared.seconds_prepare << " s, "
+              << (sources.farthest_point ? "sample " + std::to_string(one.seconds_sample) + " s, " : std::string())
+              << "rows " << seconds_compute << " s, write "
               << seconds_write << " s, total " << seconds_total << " s\n"
               << "  peak memory per process " << rss_list << " MB\n"
               << "  wrote " << options.output << "\n";

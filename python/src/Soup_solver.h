@@ -85,6 +85,11 @@ public:
   virtual std::vector<double> target_distances(const Query& query, std::vector<Moved_point>& moved,
                                                std::vector<long long>* labels) const = 0;
   virtual Paths shortest_paths(const Query& query, std::vector<Moved_point>& moved) const = 0;
+  // farthest-point sampling of `k` vertices from query.sources[0] (a vertex): the samples, the
+  // field of them into `distances` and, unless null, the number of each vertex's nearest sample
+  // into `labels`
+  virtual std::vector<long long> farthest_point_sampling(const Query& query, std::size_t k, double* distances,
+                                                         long long* labels) const = 0;
 };
 
 template <class Kernel>
@@ -283,6 +288,30 @@ public:
     return paths;
   }
 
+  std::vector<long long> farthest_point_sampling(const Query& query, std::size_t k, double* distances,
+                                                 long long* labels) const override
+  {
+    namespace DP = CGAL::DGG_VTP_3::parameters;
+    const std::size_t first = solver_place(query.sources.at(0), "first sample").vertex;
+    Field field(*this, distances);
+    std::vector<std::size_t> nearest(m_solver->number_of_vertices()), samples;
+    with_threads(query.threads, [&](auto tag) {
+      m_solver->template farthest_point_sampling<decltype(tag)>(
+        k, std::back_inserter(samples),
+        DP::first_sample(first, DP::distance_map(field.map(), DP::nearest_source_map(CGAL::make_property_map(nearest),
+                                                  CGAL::parameters::accuracy(query.epsilon).callback(interruption(query))))));
+    });
+    std::vector<long long> label;
+    if(labels)
+      for(std::size_t l : nearest)
+        label.push_back(l == std::size_t(-1) ? -1 : static_cast<long long>(l));
+    field.finish(labels, label);
+    std::vector<long long> out;
+    for(std::size_t v : samples)
+      out.push_back(static_cast<long long>(m_soup.file_vertex_of[v]));
+    return out;
+  }
+
 private:
   // The distances of one propagation per solver vertex, then per caller vertex: in double on a
   // soup without copies, the library writes straight into the caller's array.
@@ -332,10 +361,10 @@ private:
     return CGAL::DGG_VTP_3::parameters::max_distance(query.max_distance).accuracy(query.epsilon);
   }
   // ... of a query of one propagation, which asks query.interrupted between its rounds
-  static auto one_query_parameters(const Query& query)
+  static auto one_query_parameters(const Query& query) { return named_parameters(query).callback(interruption(query)); }
+  static std::function<bool(double)> interruption(const Query& query)
   {
-    return named_parameters(query).callback(
-      std::function<bool(double)>([&query](double) { return !(query.interrupted && query.interrupted()); }));
+    return [&query](double) { return !(query.interrupted && query.interrupted()); };
   }
   // between the rows of many propagations
   static void stop_if_interrupted(const Query& query)

@@ -142,6 +142,25 @@ local_distance_matrix(). With return_bounds=True, returns (rows, bounds): bounds
 certified error of row k, as distances(sources[k], return_bounds=True) gives it.
 )";
 
+const char* const farthest_point_sampling = R"(Farthest-point sampling: k vertices, first (default 0) then each time the vertex farthest
+from those before it (ties to the lowest index). Returns the samples, int64 (k,); with
+return_distances=True and return_labels=True, (samples, distances, labels) in that order (or
+the one asked): distances float64 (num_vertices,), each vertex's distance to the nearest sample;
+labels int64 (num_vertices,), the index in samples of that sample.
+
+In the exact mode (epsilon=0) the samples are the greedy sequence; with epsilon > 0 each
+sample's exact distance to those before it is at least the largest one divided by 1 + epsilon,
+and the distances and labels keep the contract. Each sample is added to the field of those
+before, so that it costs its Voronoi cell, not a whole field: 1000 samples cost a few whole
+fields, not 1000. Vertices no sample reaches (another component) are at inf, the farthest: the
+next sample is the first of them. threads: the rounds of each propagation (as distances());
+the same samples for any number. Ctrl-C stops it (KeyboardInterrupt).
+Raises ValueError for k outside [1, num_vertices], first out of range, an epsilon outside
+[0, 1], threads < 0.
+
+>>> samples, d, labels = solver.farthest_point_sampling(100, return_distances=True, return_labels=True)
+)";
+
 const char* const local_distance_matrix = R"(The distances within max_distance from each source vertex, as a scipy.sparse.csr_matrix of
 shape (len(sources), num_vertices) (default sources=None: every vertex, in order, a square
 matrix): row k holds every vertex at distance <= max_distance from sources[k], with its

@@ -406,6 +406,33 @@ PYBIND11_MODULE(_dggvtp, m)
       "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1, "return_labels"_a = false,
       "return_bounds"_a = false, doc::distances)
     .def(
+      "farthest_point_sampling",
+      [](const Geodesic_solver& s, long long k, long long first, double epsilon, long threads, bool return_distances,
+         bool return_labels) -> Field {
+        const std::size_t n = s.vertices();
+        if(k < 1 || static_cast<unsigned long long>(k) > n)
+          bad("k must be in [1, num_vertices] = [1, " + std::to_string(n) + "]; got " + std::to_string(k));
+        if(first < 0 || static_cast<unsigned long long>(first) >= n)
+          bad("first " + std::to_string(first) + " is out of range (the mesh has " + std::to_string(n) + " vertices)");
+        Query q = s.query(epsilon, infinity, threads);
+        q.sources.resize(1);
+        q.sources[0].vertex = std::size_t(first);
+        py::array_t<double> d(static_cast<py::ssize_t>(n));
+        py::array_t<std::int64_t> labels(return_labels ? py::ssize_t(n) : 0);
+        long long* out_labels = return_labels ? reinterpret_cast<long long*>(labels.mutable_data()) : nullptr;
+        std::vector<long long> samples;
+        run_interruptible(q, [&] { samples = s.solver->farthest_point_sampling(q, std::size_t(k), d.mutable_data(), out_labels); });
+        py::array_t<std::int64_t> out(py::ssize_t(samples.size()));
+        std::copy(samples.begin(), samples.end(), out.mutable_data());
+        if(return_distances && return_labels)
+          return {py::make_tuple(out, d, labels)};
+        if(return_distances || return_labels)
+          return {py::make_tuple(out, return_distances ? py::object(d) : py::object(labels))};
+        return {std::move(out)};
+      },
+      "k"_a, py::kw_only(), "first"_a = 0, "epsilon"_a = 0., "threads"_a = 1, "return_distances"_a = false,
+      "return_labels"_a = false, doc::farthest_point_sampling)
+    .def(
       "distances_from_each",
       [](const Geodesic_solver& s, const Vertices& sources, double epsilon, double max_distance, long threads,
          bool return_bounds) -> Field {

@@ -186,6 +186,40 @@ BOOST_AUTO_TEST_CASE(parallel_rounds_give_the_sequential_bits)
       }
     }
 }
+
+// farthest-point sampling adds each sample to the field of those before, a prior field read
+// across the patches' borders and the copies: the samples, the field and the labels of
+// Sequential_tag on 2, 4 and 8 threads
+BOOST_AUTO_TEST_CASE(farthest_point_sampling_gives_the_sequential_bits)
+{
+  const Finned_mesh& m = finned_lion_head();
+  const Solver solver(m.points, m.triangles, DP::copy_of(m.copy_of));
+  const std::size_t n = m.points.size();
+  for(double accuracy : {0., 1e-2})
+  {
+    const auto sample = [&](auto tag, std::vector<double>& d, std::vector<std::size_t>& labels) {
+      std::vector<std::size_t> samples;
+      d.assign(n, -1.), labels.assign(n, 0);
+      solver.farthest_point_sampling<decltype(tag)>(
+        60, std::back_inserter(samples),
+        DP::distance_map(CGAL::make_property_map(d),
+                         DP::nearest_source_map(CGAL::make_property_map(labels), CGAL::parameters::accuracy(accuracy))));
+      return samples;
+    };
+    std::vector<double> d0, d;
+    std::vector<std::size_t> l0, l;
+    const std::vector<std::size_t> expected = sample(CGAL::Sequential_tag(), d0, l0);
+    for(int threads : {2, 4, 8})
+    {
+      const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      int differ = 0;
+      for(int run = 0; run < (runs_per_thread_count() + 3) / 4; ++run)
+        differ += !(sample(CGAL::Parallel_tag(), d, l) == expected && same_bits(d, d0) && l == l0);
+      BOOST_TEST(differ == 0, "accuracy " << accuracy << ", " << threads << " threads: " << differ
+                                          << " samplings differ from Sequential_tag");
+    }
+  }
+}
 #endif
 
 // A query with targets stops early, with windows left in the lists; the whole field after it, on

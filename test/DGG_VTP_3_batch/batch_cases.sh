@@ -283,6 +283,11 @@ farthest_point_sampling)
   done
   run "$lion" --sources fps:6 --output fps2.npy --threads 2 --quiet; [ "$rc" -eq 0 ] || fail "$err"
   cmp -s fps.npy fps2.npy || fail "fps on 2 threads: other bytes"
+  # the sources chosen first: a local distance matrix of them, and the sampling timed
+  run "$lion" --sources fps:6 --output fps.npz --max-distance 0.05 --sources-output chosen_local.txt --stats fs.json \
+    --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  cmp -s chosen.txt chosen_local.txt || fail "fps with --max-distance chose other sources"
+  grep -q '"seconds_sample": [0-9]' fs.json || fail "stats lack seconds_sample: $(cat fs.json)"
   if [ "$mpiexec" != none ] && command -v "$mpiexec" >/dev/null 2>&1; then
     mpi 2 "$lion" --sources fps:6 --output fps3.npy --sources-output chosen3.txt --quiet > mpi.log 2>&1 ||
       fail "mpirun fps: $(cat mpi.log)"
@@ -296,7 +301,7 @@ farthest_point_sampling_resumes)
   DGGVTP_BATCH_TEST_KILL_AFTER_ROWS=5 "$batch" "$lion" --sources fps:40 --output out.npy --quiet 2>/dev/null
   rc=$?
   [ "$rc" -eq 137 ] || fail "exit status $rc, expected 137 (killed by SIGKILL after 5 rows)"
-  [ -e out.npy.checkpoint/fps_state ] || fail "no farthest-point state recorded before the kill"
+  ls out.npy.checkpoint/done.* > /dev/null 2>&1 || fail "no rows recorded before the kill"
   run "$lion" --sources fps:40 --output out.npy --sources-output out.txt --stats st.json --quiet; [ "$rc" -eq 0 ] || fail "$err"
   cmp -s ref.npy out.npy && cmp -s ref.txt out.txt || fail "the resumed fps run differs"
   [ "$(json_field st.json rows_resumed)" -eq 5 ] || fail "$(json_field st.json rows_resumed) rows resumed, expected 5"

@@ -26,7 +26,7 @@ run() {
     case ${args[i]} in
       --output|-o|--stats|--labels|--paths|--isolines-output|--error-bounds) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
       --output=*|--stats=*|--labels=*|--paths=*|--isolines-output=*|--error-bounds=*) outputs+=("${args[i]#*=}") ;;
-      --source|-s|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads|--isolines|--isolines-at) i=$((i + 1)) ;;
+      --source|-s|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads|--isolines|--isolines-at|--fps) i=$((i + 1)) ;;
       --source-point|--target-point|--path-to-point) i=$((i + 3)) ;;
       --repair) nan_allowed=true ;;   # a vertex the repairs removed is nan: the cases check which
       -*) ;;
@@ -244,6 +244,35 @@ case $case in
         done
       done
     done ;;
+  farthest_point_sampling)
+    # the samples on stdout, the field and the labels as text and in a PLY file; exact: each
+    # sample is the vertex farthest from those before (the greedy sequence: its distance to them
+    # is the largest in the field of those before, checked with --fps K-1)
+    run "$spot" --quiet --fps 6 --source 3 --output "$work/d.txt" --labels "$work/l.txt"; expect_rc 0
+    [ "$(printf '%s\n' "$out" | wc -l)" -eq 6 ] || fail "not 6 samples: $out"
+    [ "$(printf '%s\n' "$out" | head -1)" = 3 ] || fail "the first sample is not --source 3"
+    [ "$(printf '%s\n' "$out" | sort -u | wc -l)" -eq 6 ] || fail "a sample twice: $out"
+    k=0
+    for v in $out; do
+      [ "$(sed -n "$((v + 1))p" "$work/d.txt")" = 0 ] || fail "sample $v is not at 0"
+      [ "$(sed -n "$((v + 1))p" "$work/l.txt")" = $k ] || fail "sample $v is not labelled $k"
+      k=$((k + 1))
+    done
+    run "$spot" --quiet --fps 5 --source 3 --output "$work/d5.txt"; expect_rc 0
+    sixth=$(awk 'NR == 1 || $1 > m { m = $1; v = NR - 1 } END { print v }' "$work/d5.txt")
+    run "$spot" --quiet --fps 6 --source 3; expect_rc 0
+    [ "$(printf '%s\n' "$out" | sed -n 6p)" = "$sixth" ] ||
+      fail "the sixth sample is not the farthest vertex of the field of five ($sixth)"
+    run "$spot" --quiet --fps 6 --source 3 --epsilon 1e-2 --output "$work/f.ply" --labels "$work/fl.txt" \
+      --error-bounds "$work/fe.txt"; expect_rc 0
+    run "$spot" --quiet --fps 6 --source 3 --epsilon 1e-2 --output "$work/f.txt" --threads 2; expect_rc 0
+    check_field ply "$work/f.ply" "$spot" "$work/f.txt" "$work/fl.txt"
+    run "$spot" --fps 0; expect_usage_error
+    run "$spot" --fps 3 --target 5; expect_usage_error
+    run "$spot" --fps 3 --source 1 --source 2; expect_usage_error
+    run "$spot" --fps 3 --max-distance 0.1; expect_usage_error
+    run "$spot" --fps 3 --output -; expect_usage_error
+    rm "$work/d.txt"; run "$spot" --fps 2931 --output "$work/d.txt"; expect_input_error ;;
   float_precision)
     run "$spot" --quiet --output "$work/double.txt"; expect_rc 0
     run "$spot" --quiet --precision float --output "$work/float.txt"; expect_rc 0

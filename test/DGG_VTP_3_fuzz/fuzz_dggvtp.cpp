@@ -7,7 +7,9 @@
 // propagation and one DGG-VTP run (accuracy 1e-4), as the command-line program does them, and
 // both again on 2 threads (Parallel_tag, where linked with TBB), which must give the same bits:
 // patches here have 4 faces or more (CGAL_DGG_VTP_3_MIN_PATCH_FACES, 2048 in a release), so that
-// the small inputs run rounds across patches, with the copies a repair makes among them.
+// the small inputs run rounds across patches, with the copies a repair makes among them. Then a
+// farthest-point sampling of 4 vertices from the source (check_sampling: each sample added to the
+// field of those before), against its samples' whole fields and on 2 threads.
 //
 // The first byte chooses how the rest is read:
 //   bits 0-1  the file's extension: .off, .ply, .obj, .stl
@@ -48,6 +50,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -103,11 +106,52 @@ std::vector<double> file_distances(const dggvtp::Loaded_soup& soup, const Solver
   return out;
 }
 
+// Farthest-point sampling of 4 vertices (each added to the field of those before, see the
+// manual), exact: its field is the minimum of its samples' whole fields, within the rounding of
+// the ties a vertex keeps (64 ulps of the propagation's double, a few of a float result), and the
+// same on 2 threads
+template <class Kernel>
+void check_sampling(const Solver<Kernel>& solver, std::size_t first)
+{
+  using FT = typename Kernel::FT;
+  const std::size_t n = solver.number_of_vertices(), k = (std::min)(n, std::size_t(4));
+  std::vector<FT> d(n);
+  std::vector<std::size_t> samples;
+  solver.farthest_point_sampling(k, std::back_inserter(samples),
+                                 CGAL::DGG_VTP_3::parameters::first_sample(first, CGAL::DGG_VTP_3::parameters::distance_map(
+                                                                                    CGAL::make_property_map(d))));
+  std::vector<FT> nearest(n, std::numeric_limits<FT>::infinity()), row(n);
+  for(std::size_t s : samples)
+  {
+    solver.compute_distances(s, CGAL::make_property_map(row));
+    for(std::size_t i = 0; i < n; ++i)
+      nearest[i] = (std::min)(nearest[i], row[i]);
+  }
+  for(std::size_t i = 0; i < n; ++i)
+    if(!(d[i] == nearest[i] ||
+         (std::isfinite(double(d[i])) &&
+          std::abs(double(d[i] - nearest[i])) <= (1e-13 + 4. * double(std::numeric_limits<FT>::epsilon())) * double(nearest[i]))))
+      fail("farthest-point sampling: vertex " + std::to_string(i) + " at " + std::to_string(double(d[i])) +
+           ", its samples' fields give " + std::to_string(double(nearest[i])));
+#ifdef CGAL_LINKED_WITH_TBB
+  const tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+  std::vector<FT> threaded(n);
+  std::vector<std::size_t> threaded_samples;
+  solver.template farthest_point_sampling<CGAL::Parallel_tag>(
+    k, std::back_inserter(threaded_samples),
+    CGAL::DGG_VTP_3::parameters::first_sample(first, CGAL::DGG_VTP_3::parameters::distance_map(CGAL::make_property_map(threaded))));
+  if(threaded_samples != samples || std::memcmp(threaded.data(), d.data(), n * sizeof(FT)) != 0)
+    fail("farthest-point sampling on 2 threads differs from one");
+#endif
+}
+
 template <class Kernel>
 void run(dggvtp::Loaded_soup& soup, std::size_t source)
 {
   std::optional<Solver<Kernel>> solver;
   dggvtp::make_solver(soup, solver);
+  if(const std::vector<std::size_t> first = dggvtp::solver_vertices_of(soup, source); !first.empty())
+    check_sampling<Kernel>(*solver, first[0]);
   const std::vector<double> exact = file_distances<Kernel>(soup, *solver, source, 0.);
   const std::vector<double> approx = file_distances<Kernel>(soup, *solver, source, 1e-4);
   static const bool check_contract = [] {

@@ -230,6 +230,29 @@ public:
    *     \cgalParamType{a writable vertex property map with value type `std::size_t`}
    *     \cgalParamDefault{none}
    *   \cgalParamNEnd
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::prior_distance_map}
+   *     \cgalParamDescription{adds the sources to the field of earlier ones: per vertex, its
+   *                           distance to them (`+infinity` where unreached), as a query of this
+   *                           solver at this accuracy or less gave it (within the contract). The
+   *                           result is the field of all the sources, within the contract; the
+   *                           propagation only goes where the new sources are nearer (see the
+   *                           manual, "Adding sources to a field"). Not with `targets` and `max_distance`}
+   *     \cgalParamType{a readable vertex property map with value type `FT`}
+   *     \cgalParamDefault{none: from the sources alone}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::prior_nearest_source_map}
+   *     \cgalParamDescription{with a prior field, the number of each vertex's nearest earlier
+   *                           source; the new sources are numbered from one beyond the largest.
+   *                           Needed for `nearest_source_map`}
+   *     \cgalParamType{a readable vertex property map with value type `std::size_t`}
+   *     \cgalParamDefault{none}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::prior_lower_bound_map}
+   *     \cgalParamDescription{with a prior field, its certified lower bounds (as `lower_bound_map`
+   *                           gave them), kept where no new source is nearer}
+   *     \cgalParamType{a readable vertex property map with value type `FT`}
+   *     \cgalParamDefault{the prior distance divided by 1 + accuracy}
+   *   \cgalParamNEnd
    *   \cgalParamNBegin{callback}
    *     \cgalParamDescription{progress and cancellation: called on the calling thread between
    *                           rounds of the propagation, after the first round and then at most
@@ -247,7 +270,9 @@ public:
    * \throws std::invalid_argument if `source` is not a vertex or a point of the mesh (the face
    *         of another mesh, barycentric coordinates that are not finite, negative beyond rounding
    *         or do not add up to 1), the accuracy is not in [0, 1], or the maximum
-   *         distance is negative or NaN; the same for the targets.
+   *         distance is negative or NaN; the same for the targets; for a prior distance negative
+   *         or NaN, a prior lower bound outside [0, the prior distance], or no prior nearest source
+   *         where the prior distance is finite.
    * \throws CGAL::DGG_VTP_3::Propagation_cancelled if `callback` returned `false`.
    */
   template <class ConcurrencyTag = Sequential_tag, class Source, class VertexDistanceMap,
@@ -368,6 +393,51 @@ public:
       sources, np, [this](auto& propagation, const auto& query, const auto& targets) {
         return Shortest_path_tree<Geodesic_distance_solver>(m_core, propagation, query, targets);
       });
+  }
+
+  /*!
+   * farthest-point sampling: `k` vertices, the first one given, each next one the farthest from
+   * those before it (ties to the lowest index); in the exact mode the greedy sequence, with an
+   * accuracy epsilon > 0 a sequence whose every sample's exact distance to those before it is at
+   * least the largest one divided by 1 + epsilon. Each sample is added to the field of those before
+   * (as `prior_distance_map` does), so that it costs its Voronoi cell, not a whole field. Vertices
+   * that no sample reaches (other connected components) are at `+infinity`, the farthest: the next
+   * sample is the first of them. A sample is never taken twice, even where the others are at
+   * distance 0 (copies, coincident vertices).
+   *
+   * \tparam ConcurrencyTag as for `compute_distances()`
+   * \tparam OutputIterator an output iterator accepting `vertex_descriptor`
+   * \param k the number of samples, in [1, number_of_vertices()]
+   * \param samples receives the samples, in order
+   * \param np `accuracy`, `callback` (called between the rounds of each sample's propagation and
+   *        after each sample, with the fraction of the samples taken), `DGG_VTP_3::parameters::lower_bound_map` and
+   *        `DGG_VTP_3::parameters::nearest_source_map` (the number of the nearest sample, in the order
+   *        of the samples), of the field of the samples, as for `compute_distances()`, and:
+   * \cgalNamedParamsBegin
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::first_sample}
+   *     \cgalParamDescription{the first sample}
+   *     \cgalParamType{`vertex_descriptor`}
+   *     \cgalParamDefault{the vertex of index 0}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{DGG_VTP_3::parameters::distance_map}
+   *     \cgalParamDescription{receives, per vertex, its distance to the nearest sample}
+   *     \cgalParamType{a writable vertex property map with value type `FT`}
+   *     \cgalParamDefault{none}
+   *   \cgalParamNEnd
+   * \cgalNamedParamsEnd
+   * \returns the output iterator past the samples
+   * \throws std::invalid_argument if `k` is 0 or above the number of vertices, the first sample is
+   *         not a vertex of the mesh, or the accuracy is not in [0, 1].
+   * \throws CGAL::DGG_VTP_3::Propagation_cancelled if `callback` returned `false`.
+   */
+  template <class ConcurrencyTag = Sequential_tag, class OutputIterator,
+            class NamedParameters = parameters::Default_named_parameters>
+  OutputIterator farthest_point_sampling(std::size_t k, OutputIterator samples,
+                                         const NamedParameters& np = parameters::default_values()) const
+  {
+    for(const vertex_descriptor& v : m_core->template farthest_point_sampling<ConcurrencyTag>(k, np))
+      *samples++ = v;
+    return samples;
   }
 
   /// Copies share the prepared mesh, which no query changes: a copy costs a pointer. Moving a

@@ -178,6 +178,17 @@ public:
   Triangle_soup_geodesic_distance_solver(const Triangle_soup_geodesic_distance_solver&) = default;
   Triangle_soup_geodesic_distance_solver& operator=(const Triangle_soup_geodesic_distance_solver&) = default;
 
+  /// as `Geodesic_distance_solver::farthest_point_sampling()`
+  template <class ConcurrencyTag = Sequential_tag, class OutputIterator,
+            class NamedParameters = parameters::Default_named_parameters>
+  OutputIterator farthest_point_sampling(std::size_t k, OutputIterator samples,
+                                         const NamedParameters& np = parameters::default_values()) const
+  {
+    for(std::size_t v : m_core->template farthest_point_sampling<ConcurrencyTag>(k, np))
+      *samples++ = v;
+    return samples;
+  }
+
   /// Gives back the memory that queries keep for the next ones: the scratch of a propagation (a
   /// few arrays over the vertices, faces and halfedges), one for each thread that queried at
   /// once, which the next query makes again. The solver stays usable, from any thread, and its

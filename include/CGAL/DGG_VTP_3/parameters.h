@@ -38,6 +38,11 @@ struct nearest_source_map_t {};
 struct lower_bound_map_t {};
 struct copy_of_t {};
 struct concurrency_tag_t {};
+struct prior_distance_map_t {};
+struct prior_nearest_source_map_t {};
+struct prior_lower_bound_map_t {};
+struct first_sample_t {};
+struct distance_map_t {};
 
 } // namespace internal_np
 
@@ -91,6 +96,11 @@ CGAL_DGG_VTP_3_NAMED_PARAMETER(copy_of)
 /// `CGAL::Parallel_if_available_tag` or `CGAL::Sequential_tag`, as a value
 /// (`concurrency_tag(CGAL::Parallel_tag())`). CGAL names it so from 6.0 on.
 CGAL_DGG_VTP_3_NAMED_PARAMETER(concurrency_tag)
+CGAL_DGG_VTP_3_NAMED_PARAMETER(prior_distance_map)
+CGAL_DGG_VTP_3_NAMED_PARAMETER(prior_nearest_source_map)
+CGAL_DGG_VTP_3_NAMED_PARAMETER(prior_lower_bound_map)
+CGAL_DGG_VTP_3_NAMED_PARAMETER(first_sample)
+CGAL_DGG_VTP_3_NAMED_PARAMETER(distance_map)
 
 #undef CGAL_DGG_VTP_3_NAMED_PARAMETER
 

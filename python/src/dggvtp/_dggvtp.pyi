@@ -66,6 +66,27 @@ class GeodesicSolver:
     def distances_from_each(self, sources: _SourceVertices, *, epsilon: _Real = 0.0, max_distance: _Real = ...,
                             threads: int = 1,
                             return_bounds: bool = False) -> Union[_Distances, Tuple[_Distances, _Distances]]: ...
+    @overload
+    def farthest_point_sampling(self, k: int, *, first: int = 0, epsilon: _Real = 0.0, threads: int = 1,
+                                return_distances: Literal[False] = False,
+                                return_labels: Literal[False] = False) -> _Labels: ...
+    @overload
+    def farthest_point_sampling(self, k: int, *, first: int = 0, epsilon: _Real = 0.0, threads: int = 1,
+                                return_distances: Literal[True],
+                                return_labels: Literal[False] = False) -> Tuple[_Labels, _Distances]: ...
+    @overload
+    def farthest_point_sampling(self, k: int, *, first: int = 0, epsilon: _Real = 0.0, threads: int = 1,
+                                return_distances: Literal[False] = False,
+                                return_labels: Literal[True]) -> Tuple[_Labels, _Labels]: ...
+    @overload
+    def farthest_point_sampling(self, k: int, *, first: int = 0, epsilon: _Real = 0.0, threads: int = 1,
+                                return_distances: Literal[True],
+                                return_labels: Literal[True]) -> Tuple[_Labels, _Distances, _Labels]: ...
+    @overload
+    def farthest_point_sampling(self, k: int, *, first: int = 0, epsilon: _Real = 0.0, threads: int = 1,
+                                return_distances: bool = False, return_labels: bool = False
+                                ) -> Union[_Labels, Tuple[_Labels, _Distances], Tuple[_Labels, _Labels],
+                                           Tuple[_Labels, _Distances, _Labels]]: ...
     def local_distance_matrix(self, max_distance: _Real, sources: _Vertices = None, *, epsilon: _Real = 0.0,
                               threads: int = 1, symmetric: bool = False,
                               format: str = 'csr') -> scipy.sparse.csr_matrix | scipy.sparse.csc_matrix: ...

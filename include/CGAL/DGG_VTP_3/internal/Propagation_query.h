@@ -25,6 +25,16 @@ namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
 
+// A field that a propagation adds its sources to (Propagation_query::prior), per vertex: the
+// length of a path to an earlier source (+infinity: none), a lower bound of the exact distance to
+// those, and the number of that source plus the number of vertices (see Propagation_vertices::origins())
+template <class FT>
+struct Prior_field
+{
+  std::vector<FT> distance, lower_bound;
+  std::vector<std::uint32_t> origin;
+};
+
 // What one propagation is asked: where it starts, how far it needs to go, what it records.
 template <class FT>
 struct Propagation_query
@@ -41,6 +51,10 @@ struct Propagation_query
   std::vector<Surface_point<FT>> point_targets;
   bool record_origins = false;                // the pseudo-source of each vertex (nearest sources, paths)
   bool record_arrivals = false;               // the direction each vertex's path arrives from (paths)
+  // Add the sources to a field rather than start from nothing (see Propagation_vertices::keep_field):
+  // to `prior`, or if none to the field of the propagation's last run
+  bool add_to_field = false;
+  const Prior_field<FT>* prior = nullptr;
   // the user's `callback`: given the fraction of vertices popped, false cancels (empty: none)
   std::function<bool(double)> progress;
 };

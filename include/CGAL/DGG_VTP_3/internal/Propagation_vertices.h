@@ -17,6 +17,7 @@
 #include <CGAL/DGG_VTP_3/internal/Index_set.h>
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Key_ratio.h>
+#include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
 #include <CGAL/DGG_VTP_3/internal/Pseudo_source_emission.h>
 #include <CGAL/DGG_VTP_3/internal/Pseudo_source_states.h>
 #include <CGAL/DGG_VTP_3/internal/Tuning.h>
@@ -24,6 +25,8 @@
 #include <CGAL/DGG_VTP_3/internal/Vertex_directions.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 #include <CGAL/DGG_VTP_3/internal/planar_geometry.h>
+
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <vector>
@@ -94,6 +97,18 @@ public:
     m_record_arrivals = arrivals;
   }
 
+  // for `query`: from nothing (reset()), or from a prior field (keep_field(), after load_field())
+  void start(const Key_ratio<FT>& keys, const Propagation_query<FT>& query)
+  {
+    CGAL_precondition(!query.add_to_field || query.record_origins);
+    if(!query.add_to_field || query.prior != nullptr)
+      reset(keys, query.record_origins, query.record_arrivals);
+    if(query.prior != nullptr)
+      load_field(*query.prior);
+    if(query.add_to_field)
+      keep_field(keys);
+  }
+
   // the vertices that have had a distance since reset(), patch by patch, once finish() has
   // listed them at the end of the propagation
   const std::vector<Index>& reached() const { return m_reached; }
@@ -122,14 +137,53 @@ public:
   const std::vector<Index>& origins() const { return m_record_origins ? m_origin : m_none; }
   const std::vector<Arrival>& arrivals() const { return m_record_arrivals ? m_arrival : m_no_arrivals; }
 
+  // Sources added to a field (Propagation_query::add_to_field): the vertices the last run reached,
+  // or that load_field() gave a distance, keep it, their least key and their origin, as a prior
+  // field that the new sources improve where they are nearer. A prior vertex enters the rules with
+  // its distance as its key, undiscounted even where it would emit (key()), and it never emits for a
+  // path that does not make it shorter (it arrives from every direction, see relax()). So a window
+  // of the new sources is cut there only at points whose key exceeds d(u) + |ux| >= exact(x) to the
+  // earlier sources, for a prior vertex u: points strictly nearer to those, which no shortest path
+  // from a new source to a vertex it wins passes (the manual, "Adding sources to a field").
+  // Windows do not stop at their distance bound then (`keys` made for 0 vertices, see
+  // Tuning::stops_pay): a stop makes its relay vertices emit at their distance over rho, and a prior
+  // relay's windows, below every prior key by that discount, would cross the whole prior field
+  // (benchmark/DGG_VTP_3/README.md, Table 13).
+  void keep_field(const Key_ratio<FT>& keys)
+  {
+    for(Index v : m_reached)
+    {
+      is_source[v] = prior;
+      incoming[v] = Incoming_directions<FT>{-Number_type_math<FT>::infinity(), Number_type_math<FT>::infinity()};
+    }
+    m_reached.clear();
+    m_reached_by_patch.clear();
+    m_keys = keys;
+    pseudo_sources.reset(!keys.is_exact());
+  }
+
+  // a prior field for keep_field(), after reset()
+  void load_field(const Prior_field<FT>& field)
+  {
+    for(Index v = 0; v < Index(field.distance.size()); ++v)
+      if(field.distance[v] < Number_type_math<FT>::infinity())
+      {
+        distance[v] = field.distance[v];
+        least_key[v] = field.lower_bound[v];
+        if(m_record_origins)
+          m_origin[v] = field.origin[v];
+        m_reached.push_back(v);
+      }
+  }
+
   // vertex `s` is the source numbered `k` in the query's order
   void set_source(Index s, Index k)
   {
     m_reached_by_patch.insert(s, m_partition.owner(s));
+    if(m_record_origins) // the first of the sources there, not a prior field's
+      m_origin[s] = is_source[s] == 1 ? (std::min)(m_origin[s], Index(distance.size()) + k) : Index(distance.size()) + k;
     is_source[s] = 1;
     distance[s] = least_key[s] = number<FT>(0);
-    if(m_record_origins)
-      m_origin[s] = (std::min)(m_origin[s], Index(distance.size()) + k);
   }
 
   // Lines 23-24: a path of length `d` and key `key` reaches `v`, arriving from `direction`
@@ -152,6 +206,8 @@ public:
     if(shorter)
     {
       m_reached_by_patch.insert(v, m_partition.owner(v));
+      if(is_source[v] == prior)
+        is_source[v] = 0;
       distance[v] = d;
       pseudo_sources.distance_dropped(v);
       in.low = in.high = back;
@@ -186,6 +242,8 @@ public:
   // the mesh makes one counts there.
   FT key(Index v, FT d, bool own) const
   {
+    if(is_source[v] == prior)
+      return d;
     const bool emits = is_source[v] || (own ? pseudo_sources.emits(v) : m_mesh.is_exact_pseudo_source(v));
     return emits ? m_keys.key(d) : d;
   }
@@ -211,7 +269,9 @@ public:
   // source's straight one.
   std::vector<FT> least_key;
   std::vector<Incoming_directions<FT>> incoming;  // arrival directions of its best paths
-  std::vector<char> is_source;                    // one of the sources (they emit all around)
+  // 1: one of the sources (they emit all around); `prior`: its distance is the prior field's
+  std::vector<char> is_source;
+  static constexpr char prior = 2;
   Pseudo_source_states<FT> pseudo_sources;        // DGG-VTP's vertices that emit all around
 };
 

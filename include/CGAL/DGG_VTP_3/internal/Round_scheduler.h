@@ -150,6 +150,13 @@ public:
 
   // a distance set outside the rounds (the sources')
   void commit(Index v, FT d) { m_committed[v] = d; }
+  // those of every border vertex (a prior field's, see Propagation_vertices::keep_field)
+  void commit_borders(const std::vector<FT>& distance)
+  {
+    for(Index p = 0; p < Index(m_partition.size()); ++p)
+      for(const Index* v = m_partition.border_begin(p); v != m_partition.border_end(p); ++v)
+        m_committed[*v] = distance[*v];
+  }
 
   // ---- the rounds ----------------------------------------------------------------------------
 

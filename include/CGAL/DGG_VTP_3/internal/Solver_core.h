@@ -17,6 +17,7 @@
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
 #include <CGAL/DGG_VTP_3/parameters.h>
 #include <CGAL/DGG_VTP_3/internal/Effective_concurrency_tag.h>
+#include <CGAL/DGG_VTP_3/internal/Farthest_point_sampling.h>
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_pool.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
@@ -26,6 +27,7 @@
 #include <CGAL/DGG_VTP_3/internal/for_each_block.h>
 #include <CGAL/DGG_VTP_3/internal/nearest_sources.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
+#include <CGAL/DGG_VTP_3/internal/read_prior_field.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/for_each.h>
@@ -36,6 +38,7 @@
 
 #include <array>
 #include <charconv>
+#include <functional>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -114,7 +117,22 @@ public:
   Propagation_statistics distances_to_nearest_source(const SourceRange& sources, VertexDistanceMap distances,
                                                      const NamedParameters& np) const
   {
-    const Set_up s = set_up(sources, np);
+    Set_up s = set_up(sources, np);
+    Prior_field<Computation_FT> prior;
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::prior_distance_map_t>::value)
+    {
+      static_assert(parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value ||
+                    !parameters::is_default_parameter<NamedParameters, internal_np::prior_nearest_source_map_t>::value,
+                    "the named parameter nearest_source_map needs prior_nearest_source_map with a prior field");
+      static_assert(parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value &&
+                    parameters::is_default_parameter<NamedParameters, internal_np::max_distance_t>::value,
+                    "a prior field is a whole field: the named parameters targets and max_distance are not taken with it");
+      const Index first_number = read_prior_field(m_numbering, s.accuracy, np, prior);
+      for(Index& k : s.query.source_numbers)
+        k += first_number;
+      s.query.prior = &prior;
+      s.query.add_to_field = s.query.record_origins = true;
+    }
     const auto lease = propagation();
     Propagation& propagation = *lease;
     propagation.template run<Effective_tag<ConcurrencyTag>>(s.query, s.accuracy);
@@ -131,22 +149,44 @@ public:
         *out++ = FT(dt > s.query.max_distance ? Number_type_math<Computation_FT>::infinity() : dt);
       }
     }
-    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::lower_bound_map_t>::value)
-    {
-      auto bounds = parameters::get_parameter(np, internal_np::lower_bound_map_t());
-      const std::vector<Computation_FT>& k = propagation.lower_bounds();
-      for(std::size_t i = 0; i < k.size(); ++i)
-        put(bounds, m_numbering.vertex(i), rounded_down(k[i]));
-    }
-    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value)
-    {
-      auto labels = parameters::get_parameter(np, internal_np::nearest_source_map_t());
-      const std::vector<std::size_t> nearest = nearest_sources(propagation.origins(), Propagation::no_origin());
-      for(std::size_t i = 0; i < d.size(); ++i)
-        put(labels, m_numbering.vertex(i),
-            d[i] < Number_type_math<Computation_FT>::infinity() ? nearest[i] : std::size_t(-1));
-    }
+    write_bounds_and_labels(propagation, np);
     return propagation.statistics();
+  }
+
+  // farthest-point sampling (see internal/Farthest_point_sampling.h): the samples, in order
+  template <class ConcurrencyTag, class NamedParameters>
+  std::vector<vertex_descriptor> farthest_point_sampling(std::size_t k, const NamedParameters& np) const
+  {
+    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value &&
+                    parameters::is_default_parameter<NamedParameters, internal_np::max_distance_t>::value,
+                  "each sample is the farthest vertex of a whole field: the named parameters targets and "
+                  "max_distance are not taken");
+    const Computation_FT accuracy = checked_accuracy(np);
+    const std::size_t nv = number_of_vertices();
+    if(k == 0 || k > nv)
+      throw std::invalid_argument("the number of samples must be in [1, " + std::to_string(nv) +
+                                  "] (the number of vertices); got " + std::to_string(k));
+    Index first = 0;
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::first_sample_t>::value)
+      first = checked_vertex(parameters::get_parameter(np, internal_np::first_sample_t()), "first sample");
+    std::function<bool(double)> progress; // may be given empty, as for the other queries
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value)
+      progress = parameters::get_parameter(np, internal_np::callback);
+    const auto lease = propagation();
+    const std::vector<Index> samples =
+      internal::farthest_point_sampling<Effective_tag<ConcurrencyTag>>(*lease, first, k, accuracy, progress);
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::distance_map_t>::value)
+    {
+      auto distances = parameters::get_parameter(np, internal_np::distance_map_t());
+      const std::vector<Computation_FT>& d = lease->distances();
+      for(std::size_t i = 0; i < d.size(); ++i)
+        put(distances, m_numbering.vertex(i), FT(d[i]));
+    }
+    write_bounds_and_labels(*lease, np);
+    std::vector<vertex_descriptor> out;
+    for(Index v : samples)
+      out.push_back(m_numbering.vertex(v));
+    return out;
   }
 
   // One propagation per set of source vertices, each on one thread; `row(k, distances,
@@ -297,6 +337,28 @@ private:
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value)
       s.query.progress = parameters::get_parameter(np, internal_np::callback);
     return s;
+  }
+
+  // the named parameters lower_bound_map and nearest_source_map, of the field `propagation` holds
+  template <class NamedParameters>
+  void write_bounds_and_labels(const Propagation& propagation, const NamedParameters& np) const
+  {
+    const std::vector<Computation_FT>& d = propagation.distances();
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::lower_bound_map_t>::value)
+    {
+      auto bounds = parameters::get_parameter(np, internal_np::lower_bound_map_t());
+      const std::vector<Computation_FT>& k = propagation.lower_bounds();
+      for(std::size_t i = 0; i < k.size(); ++i)
+        put(bounds, m_numbering.vertex(i), rounded_down(k[i]));
+    }
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value)
+    {
+      auto labels = parameters::get_parameter(np, internal_np::nearest_source_map_t());
+      const std::vector<std::size_t> nearest = nearest_sources(propagation.origins(), Propagation::no_origin());
+      for(std::size_t i = 0; i < d.size(); ++i)
+        put(labels, m_numbering.vertex(i),
+            d[i] < Number_type_math<Computation_FT>::infinity() ? nearest[i] : std::size_t(-1));
+    }
   }
 
   // a lower bound in the user's number type: a float one rounded down, never above the bound

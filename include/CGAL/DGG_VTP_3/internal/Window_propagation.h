@@ -124,26 +124,24 @@ public:
       m_patches[k].add_statistics(m_stats);
     m_targets.finish(m_mesh, m_vertices.distance, query);
     m_stats.vertices_reached = m_vertices.finish(query.max_distance, m_pending_keys);
-    m_reusable = true;
+    m_reusable = !query.add_to_field;
   }
 
-  // whether the last run() ended normally: one that threw (a cancelled query, a refused mesh) may
-  // have left messages between patches, and its propagation is not run again
+  // whether the last run() ended normally from nothing: one that threw (a cancelled query, a refused
+  // mesh) may have left messages between patches, and one that added to a field left it behind
   bool reusable() const { return m_reusable; }
 
-  // per vertex, when the query records them: the pseudo-source of its path (see
-  // Propagation_vertices), and where its path arrives from
+  // per vertex, when recorded: the pseudo-source of its path, where its path arrives from
   using Arrival = typename Propagation_vertices<FT>::Arrival;
   const std::vector<Index>& origins() const { return m_vertices.origins(); }
   const std::vector<Arrival>& arrivals() const { return m_vertices.arrivals(); }
   static Index no_origin() { return Propagation_vertices<FT>::no_origin(); }
-  // the query's point targets: how their shortest paths arrive
-  const Point_targets<FT>& point_targets() const { return m_targets; }
+  const Point_targets<FT>& point_targets() const { return m_targets; } // how their paths arrive
 
   const std::vector<FT>& distances() const { return m_vertices.distance; }
   // per vertex, a lower bound of its exact distance (see Propagation_vertices::finish)
   const std::vector<FT>& lower_bounds() const { return m_vertices.least_key; }
-  // the vertices that got a distance (+infinity beyond max_distance); the others are at +infinity
+  // the vertices the run gave a distance (+infinity beyond max_distance); the others are as before
   const std::vector<Index>& reached() const { return m_vertices.reached(); }
   const Propagation_statistics& statistics() const { return m_stats; }
 
@@ -155,12 +153,14 @@ private:
   void reset(const Propagation_query<FT>& query, FT accuracy)
   {
     m_reusable = false;
-    m_keys = Key_ratio<FT>(accuracy, m_mesh.number_of_vertices());
+    m_keys = Key_ratio<FT>(accuracy, query.add_to_field ? 0 : m_mesh.number_of_vertices()); // see keep_field()
     m_emission.set_keys(m_keys);
     for(Index k : m_scheduler.woken())
       m_patches[k].clear(m_scheduled);
     m_scheduler.reset(m_vertices.reached());
-    m_vertices.reset(m_keys, query.record_origins, query.record_arrivals);
+    m_vertices.start(m_keys, query);
+    if(query.add_to_field)
+      m_scheduler.commit_borders(m_vertices.distance); // the other patches read the prior field
     m_in_region.clear();
     m_stats = Propagation_statistics();
     m_progress.reset();
