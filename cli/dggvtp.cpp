@@ -585,12 +585,8 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
   }
 
   // per solver vertex: the number of the source option, or of the sample (not a source option)
-  std::vector<long long> label(nearest.size());
-  if(options.fps > 0)
-    std::transform(nearest.begin(), nearest.end(), label.begin(),
-                   [](std::size_t k) { return k == std::size_t(-1) ? -1LL : static_cast<long long>(k); });
-  else
-    label = dggvtp::finish_sources(q, nearest, d.data());
+  const std::vector<long long> label =
+    options.fps > 0 ? dggvtp::sample_labels(nearest) : dggvtp::finish_sources(q, nearest, d.data());
 
   const auto target_distance = [&](const auto& t) {
     return double(t.vertices.empty() ? at_targets[t.point] : d[dggvtp::nearest_copy(t.vertices, d)]);

@@ -301,11 +301,7 @@ public:
         DP::first_sample(first, DP::distance_map(field.map(), DP::nearest_source_map(CGAL::make_property_map(nearest),
                                                   CGAL::parameters::accuracy(query.epsilon).callback(interruption(query))))));
     });
-    std::vector<long long> label;
-    if(labels)
-      for(std::size_t l : nearest)
-        label.push_back(l == std::size_t(-1) ? -1 : static_cast<long long>(l));
-    field.finish(labels, label);
+    field.finish(labels, labels ? sample_labels(nearest) : std::vector<long long>());
     std::vector<long long> out;
     for(std::size_t v : samples)
       out.push_back(static_cast<long long>(m_soup.file_vertex_of[v]));

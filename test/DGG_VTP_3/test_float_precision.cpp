@@ -14,8 +14,6 @@ using namespace dggvtp_test;
 
 namespace {
 
-using Float_configurations = std::tuple<Sm_f, Ph_f>;
-
 template <class Config>
 void check_against_double(const std::string& file)
 {

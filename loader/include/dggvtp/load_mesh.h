@@ -8,6 +8,7 @@
 
 #include <dggvtp/check_off.h>
 #include <dggvtp/check_ply.h>
+#include <dggvtp/faces_to_mesh.h>
 #include <dggvtp/fast_read.h>
 #include <dggvtp/input_error.h>
 #include <dggvtp/loaded_soup.h>
@@ -19,7 +20,6 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/tags.h>
 
@@ -349,7 +349,7 @@ CGAL::Surface_mesh<typename Kernel::Point_3> soup_to_mesh(const Loaded_soup& sou
   for(const auto& p : soup.points)
     points.emplace_back(typename Kernel::FT(p.x()), typename Kernel::FT(p.y()), typename Kernel::FT(p.z()));
   CGAL::Surface_mesh<Point> mesh;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, soup.polygons, mesh);
+  faces_to_mesh(points, soup.polygons, mesh);
   return mesh;
 }
 
@@ -364,7 +364,7 @@ CGAL::Surface_mesh<typename Kernel::Point_3> make_triangle_mesh(Loaded_soup& sou
     triangles_to_polygons(soup);
   internal::triangulate_soup(soup);
   // A face that does not fit (inconsistent orientation, more than two faces on an edge) is left
-  // out by the conversion; only then are repeated faces dropped and the soup oriented, which on
+  // out by the conversion (soup_to_mesh); only then are repeated faces dropped and the soup oriented, which on
   // a clean million-face file would cost ten times the rest of loading.
   auto mesh = internal::soup_to_mesh<Kernel>(soup);
   if(num_faces(mesh) != soup.polygons.size())

@@ -17,9 +17,9 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
@@ -88,8 +88,7 @@ public:
   {
     if(triangles.empty())
       throw Input_error("the mesh has no face to place a point on");
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, m_mesh);
-    if(num_faces(m_mesh) != triangles.size() || num_vertices(m_mesh) != points.size())
+    if(internal::faces_to_mesh(points, triangles, m_mesh) != 0)
       throw std::logic_error("the solver's triangles do not make a Surface_mesh");
     CGAL::Polygon_mesh_processing::build_AABB_tree(m_mesh, m_tree);
   }
@@ -291,6 +290,16 @@ std::vector<long long> finish_sources(const Places& q, const std::vector<std::si
     if(!label.empty())
       label[v] = static_cast<long long>(option);
   }
+  return label;
+}
+
+// The labels of a farthest-point sampling: per solver vertex, the number of its nearest sample
+// (the library's nearest_source_map), or -1 where unreached.
+inline std::vector<long long> sample_labels(const std::vector<std::size_t>& nearest)
+{
+  std::vector<long long> label(nearest.size());
+  std::transform(nearest.begin(), nearest.end(), label.begin(),
+                 [](std::size_t k) { return k == std::size_t(-1) ? -1LL : static_cast<long long>(k); });
   return label;
 }
 

@@ -26,18 +26,21 @@ namespace internal {
 // The key ratio rho of a propagation (Tuning::key_ratio): a pseudo-source at distance d sends its
 // windows out with the key d / rho, and a window of key sigma gives the distance rho sigma (see
 // Window and the manual's argument), and the constants of the distance bound derived from rho,
-// computed once, and whether windows stop at their distance bound on a mesh of this size
-// (Tuning::stops_pay). rho = 1 is the exact algorithm: keys are distances, bit for bit.
+// computed once, and whether windows stop at their distance bound (where Tuning::stops_pay says
+// they gain, unless the propagation forbids them). rho = 1 is the exact algorithm: keys are
+// distances, bit for bit.
 template <class FT>
 class Key_ratio
 {
 public:
-  Key_ratio(FT accuracy, std::size_t number_of_vertices)
+  // `stops_allowed`: false where stops would break the propagation's argument (see
+  // Propagation_vertices::keep_field)
+  Key_ratio(FT accuracy, std::size_t number_of_vertices, bool stops_allowed = true)
     : m_rho(Tuning<FT>::key_ratio(accuracy))
     , m_lambda(number<FT>(1) / m_rho)
     , m_one_minus_lambda((m_rho - number<FT>(1)) / m_rho) // without cancellation for a small epsilon
     , m_k(m_one_minus_lambda * (number<FT>(1) + m_lambda) / number<FT>(2))
-    , m_stops(m_rho > FT(1) && Tuning<FT>::stops_pay(accuracy, number_of_vertices))
+    , m_stops(stops_allowed && m_rho > FT(1) && Tuning<FT>::stops_pay(accuracy, number_of_vertices))
   {}
 
   bool is_exact() const { return !(m_rho > FT(1)); }

@@ -145,15 +145,17 @@ public:
   // of the new sources is cut there only at points whose key exceeds d(u) + |ux| >= exact(x) to the
   // earlier sources, for a prior vertex u: points strictly nearer to those, which no shortest path
   // from a new source to a vertex it wins passes (the manual, "Adding sources to a field").
-  // Windows do not stop at their distance bound then (`keys` made for 0 vertices, see
-  // Tuning::stops_pay): a stop makes its relay vertices emit at their distance over rho, and a prior
+  // Windows do not stop at their distance bound then (`keys` made with stops not allowed): a stop makes its relay vertices emit at their distance over rho, and a prior
   // relay's windows, below every prior key by that discount, would cross the whole prior field
   // (benchmark/DGG_VTP_3/README.md, Table 13).
   void keep_field(const Key_ratio<FT>& keys)
   {
+    if(m_in_field.empty())
+      m_in_field.assign(distance.size(), 0);
     for(Index v : m_reached)
     {
       is_source[v] = prior;
+      m_in_field[v] = 1;
       incoming[v] = Incoming_directions<FT>{-Number_type_math<FT>::infinity(), Number_type_math<FT>::infinity()};
     }
     m_reached.clear();
@@ -239,10 +241,11 @@ public:
   // bending there is beaten by one passing beside it, as in the exact algorithm, and along a
   // straight path a key grows no faster than the distance). `own`: whether `v` is of the patch
   // that asks; another patch's vertex may become a pseudo-source during the round, so only what
-  // the mesh makes one counts there.
+  // the mesh makes one counts there, and it may leave the prior field, so it counts as in it if
+  // it was at the start of the run (d is the largest key, the one that cuts the least).
   FT key(Index v, FT d, bool own) const
   {
-    if(is_source[v] == prior)
+    if(own ? is_source[v] == prior : !m_in_field.empty() && m_in_field[v])
       return d;
     const bool emits = is_source[v] || (own ? pseudo_sources.emits(v) : m_mesh.is_exact_pseudo_source(v));
     return emits ? m_keys.key(d) : d;
@@ -259,6 +262,9 @@ private:
   bool m_record_origins = false, m_record_arrivals = false;
   std::vector<Index> m_origin;   // per vertex: see origins() (empty until a propagation records them)
   std::vector<Arrival> m_arrival; // per vertex: see arrivals() (likewise)
+  // per vertex, in a run that adds sources to a field: whether it was in the field at the start
+  // (the runs do not reset, see Window_propagation::m_reusable)
+  std::vector<char> m_in_field;
   const std::vector<Index> m_none;
   const std::vector<Arrival> m_no_arrivals;
 

@@ -24,6 +24,7 @@
 #include <CGAL/DGG_VTP_3/internal/Query_builder.h>
 #include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
 #include <CGAL/DGG_VTP_3/internal/Window_propagation.h>
+#include <CGAL/DGG_VTP_3/internal/as_given.h>
 #include <CGAL/DGG_VTP_3/internal/for_each_block.h>
 #include <CGAL/DGG_VTP_3/internal/nearest_sources.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
@@ -37,7 +38,6 @@
 #include <boost/range/irange.hpp>
 
 #include <array>
-#include <charconv>
 #include <functional>
 #include <cmath>
 #include <cstdint>
@@ -124,8 +124,7 @@ public:
       static_assert(parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value ||
                     !parameters::is_default_parameter<NamedParameters, internal_np::prior_nearest_source_map_t>::value,
                     "the named parameter nearest_source_map needs prior_nearest_source_map with a prior field");
-      static_assert(parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value &&
-                    parameters::is_default_parameter<NamedParameters, internal_np::max_distance_t>::value,
+      static_assert(takes_whole_fields<NamedParameters>(),
                     "a prior field is a whole field: the named parameters targets and max_distance are not taken with it");
       const Index first_number = read_prior_field(m_numbering, s.accuracy, np, prior);
       for(Index& k : s.query.source_numbers)
@@ -136,9 +135,8 @@ public:
     const auto lease = propagation();
     Propagation& propagation = *lease;
     propagation.template run<Effective_tag<ConcurrencyTag>>(s.query, s.accuracy);
+    write_distances(propagation, distances);
     const std::vector<Computation_FT>& d = propagation.distances();
-    for(std::size_t i = 0; i < d.size(); ++i)
-      put(distances, m_numbering.vertex(i), FT(d[i]));
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::target_distances_t>::value)
     {
       auto out = parameters::get_parameter(np, internal_np::target_distances_t());
@@ -157,8 +155,7 @@ public:
   template <class ConcurrencyTag, class NamedParameters>
   std::vector<vertex_descriptor> farthest_point_sampling(std::size_t k, const NamedParameters& np) const
   {
-    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value &&
-                    parameters::is_default_parameter<NamedParameters, internal_np::max_distance_t>::value,
+    static_assert(takes_whole_fields<NamedParameters>(),
                   "each sample is the farthest vertex of a whole field: the named parameters targets and "
                   "max_distance are not taken");
     const Computation_FT accuracy = checked_accuracy(np);
@@ -169,19 +166,11 @@ public:
     Index first = 0;
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::first_sample_t>::value)
       first = checked_vertex(parameters::get_parameter(np, internal_np::first_sample_t()), "first sample");
-    std::function<bool(double)> progress; // may be given empty, as for the other queries
-    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value)
-      progress = parameters::get_parameter(np, internal_np::callback);
     const auto lease = propagation();
     const std::vector<Index> samples =
-      internal::farthest_point_sampling<Effective_tag<ConcurrencyTag>>(*lease, first, k, accuracy, progress);
+      internal::farthest_point_sampling<Effective_tag<ConcurrencyTag>>(*lease, first, k, accuracy, progress_of(np));
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::distance_map_t>::value)
-    {
-      auto distances = parameters::get_parameter(np, internal_np::distance_map_t());
-      const std::vector<Computation_FT>& d = lease->distances();
-      for(std::size_t i = 0; i < d.size(); ++i)
-        put(distances, m_numbering.vertex(i), FT(d[i]));
-    }
+      write_distances(*lease, parameters::get_parameter(np, internal_np::distance_map_t()));
     write_bounds_and_labels(*lease, np);
     std::vector<vertex_descriptor> out;
     for(Index v : samples)
@@ -334,9 +323,34 @@ private:
       !parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value;
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value)
       s.targets = builder().add_targets(parameters::get_parameter(np, internal_np::targets_t()), s.query);
-    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value)
-      s.query.progress = parameters::get_parameter(np, internal_np::callback);
+    s.query.progress = progress_of(np);
     return s;
+  }
+
+  // the named parameter callback, which may be given empty
+  template <class NamedParameters>
+  static std::function<bool(double)> progress_of(const NamedParameters& np)
+  {
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value)
+      return parameters::get_parameter(np, internal_np::callback);
+    else
+      return {};
+  }
+
+  // whether the named parameters ask for no less than whole fields (no targets, no maximum distance)
+  template <class NamedParameters>
+  static constexpr bool takes_whole_fields()
+  {
+    return parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value &&
+           parameters::is_default_parameter<NamedParameters, internal_np::max_distance_t>::value;
+  }
+
+  template <class VertexDistanceMap>
+  void write_distances(const Propagation& propagation, VertexDistanceMap distances) const
+  {
+    const std::vector<Computation_FT>& d = propagation.distances();
+    for(std::size_t i = 0; i < d.size(); ++i)
+      put(distances, m_numbering.vertex(i), FT(d[i]));
   }
 
   // the named parameters lower_bound_map and nearest_source_map, of the field `propagation` holds
@@ -369,13 +383,6 @@ private:
       if(Computation_FT(y) > x)
         y = std::nextafter(y, -std::numeric_limits<FT>::infinity());
     return y;
-  }
-
-  // the shortest text that reads back as `x` (-1e-09, not std::to_string's -0.000000)
-  static std::string as_given(double x)
-  {
-    char text[32];
-    return std::string(text, std::to_chars(text, text + sizeof(text), x).ptr);
   }
 
   template <class NamedParameters>

@@ -153,7 +153,7 @@ private:
   void reset(const Propagation_query<FT>& query, FT accuracy)
   {
     m_reusable = false;
-    m_keys = Key_ratio<FT>(accuracy, query.add_to_field ? 0 : m_mesh.number_of_vertices()); // see keep_field()
+    m_keys = Key_ratio<FT>(accuracy, m_mesh.number_of_vertices(), !query.add_to_field); // see keep_field()
     m_emission.set_keys(m_keys);
     for(Index k : m_scheduler.woken())
       m_patches[k].clear(m_scheduled);

@@ -16,6 +16,7 @@
 
 #include <CGAL/DGG_VTP_3/parameters.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_query.h>
+#include <CGAL/DGG_VTP_3/internal/as_given.h>
 #include <CGAL/DGG_VTP_3/internal/number_type_math.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -55,9 +56,9 @@ std::uint32_t read_prior_field(const Numbering& numbering, FT accuracy, const Na
   {
     const auto v = numbering.vertex(i);
     const double d = CGAL::to_double(get(distances, v));
-    const std::string which = "the prior distance of vertex " + std::to_string(i);
     if(!(d >= 0.))
-      throw std::invalid_argument(which + " must be >= 0 or +infinity; got " + std::to_string(d));
+      throw std::invalid_argument("the prior distance of vertex " + std::to_string(i) +
+                                  " must be >= 0 or +infinity; got " + as_given(d));
     if(d == std::numeric_limits<double>::infinity())
       continue;
     field.distance[i] = FT(get(distances, v));
@@ -77,7 +78,7 @@ std::uint32_t read_prior_field(const Numbering& numbering, FT accuracy, const Na
       const auto lower = get(parameters::get_parameter(np, internal_np::prior_lower_bound_map_t()), v);
       if(!(CGAL::to_double(lower) >= 0. && FT(lower) <= field.distance[i]))
         throw std::invalid_argument("the prior lower bound of vertex " + std::to_string(i) +
-                                    " must be in [0, its prior distance]; got " + std::to_string(CGAL::to_double(lower)));
+                                    " must be in [0, its prior distance]; got " + as_given(CGAL::to_double(lower)));
       field.lower_bound[i] = FT(lower);
     }
   }
