@@ -63,6 +63,8 @@ setup(
     name="dggvtp",
     version=project_version(),
     description="Exact and accuracy-controlled geodesic distances on triangle meshes (DGG-VTP for CGAL)",
+    long_description=(ROOT / "README.md").read_text(encoding="utf-8"),
+    long_description_content_type="text/markdown",
     license="GPL-3.0-or-later",
     python_requires=">=3.8",
     install_requires=["numpy", "scipy"],

@@ -10,20 +10,18 @@
 # tell whether the work grew with the ranks and threads or only had to wait for a core.
 #
 # usage: batch_scaling.sh [MESH [SOURCES [REPEAT [EPSILON]]]]
-#   MESH     default: cat_190k.ply (190,856 vertices), made once from the shared cat.ply by
-#            make_large's --sqrt3 3 into OUT_DIR (outside the repository: never commit it)
+#   MESH     default: cat_190k.ply (190,856 vertices), made once from the repository's benchmark/DGG_VTP_3/meshes/cat.ply
+#            by make_large's --sqrt3 3 (make_large.cpp, next to this script) into OUT_DIR (never commit it)
 #   SOURCES  number of sources (default 32), vertices (i * 7919) mod V, i = 0..SOURCES-1
 #   REPEAT   runs per configuration (default 3)
 #   EPSILON  default 1e-6
 # environment:
 #   CONFIGS     "RANKSxTHREADS ..." (default "1x1 1x2 2x1")
-#   SHARED_DIR  directory holding data/make_large.cpp and data/meshes (default: <repo>/../shared)
 #   OUT_DIR     where the generated mesh goes                          (default: ${TMPDIR:-/tmp}/large_meshes)
 #   BUILD       build directory holding bin/dggvtp-batch               (default: <repo>/build)
 #   MPIEXEC     the MPI launcher                                        (default: mpirun)
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-shared=${SHARED_DIR:-$repo/../shared}
 out=${OUT_DIR:-${TMPDIR:-/tmp}/large_meshes}
 build=${BUILD:-$repo/build}
 batch=$build/bin/dggvtp-batch
@@ -38,13 +36,14 @@ epsilon=${4:-1e-6}
 if [ ! -f "$mesh" ]; then
   [ "$(basename "$mesh")" = cat_190k.ply ] || { echo "error: $mesh not found" >&2; exit 1; }
   tool=${MAKE_LARGE_BUILD_DIR:-${TMPDIR:-/tmp}/make_large_build}/make_large
-  if [ ! -x "$tool" ]; then
+  if [ ! -x "$tool" ] || [ "$repo/benchmark/DGG_VTP_3/make_large.cpp" -nt "$tool" ]; then
     mkdir -p "$(dirname "$tool")"
     echo "[batch_scaling] compiling make_large (about 20-60 s)" >&2
-    g++ -O2 -std=c++17 -DNDEBUG -DCGAL_NDEBUG "$shared/data/make_large.cpp" -o "$tool" -lgmp -lmpfr
+    g++ -O2 -std=c++17 -DNDEBUG -DCGAL_NDEBUG "$repo/benchmark/DGG_VTP_3/make_large.cpp" -o "$tool.tmp" -lgmp -lmpfr
+    mv "$tool.tmp" "$tool"
   fi
   mkdir -p "$out"
-  "$tool" "$shared/data/meshes/cat.ply" "$mesh" --sqrt3 3 >&2
+  "$tool" "$repo/benchmark/DGG_VTP_3/meshes/cat.ply" "$mesh" --sqrt3 3 >&2
 fi
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/batch_scaling.XXXXXX")

@@ -16,7 +16,9 @@ Also the time of Boost.Graph's Dijkstra over the mesh edges on the same mesh (th
 figure like the paper's Fig. 8 (--plot, needs python3-matplotlib).
 
 Example (from the repository root, after building dggvtp and mesh_baseline in build/):
-  python3 benchmark/DGG_VTP_3/dgg_sweep.py --meshes ../shared/data/meshes/*.ply --out sweep.md --plot sweep.png
+  python3 benchmark/DGG_VTP_3/dgg_sweep.py --meshes data/meshes/*.ply --out sweep.md --plot sweep.png
+(terrain_jacksboro.ply, not stored: python3 benchmark/DGG_VTP_3/make_terrain_jacksboro.py, then add
+/tmp/terrain_jacksboro.ply to --meshes)
 """
 import argparse
 import datetime

@@ -143,7 +143,7 @@ def main():
     p.add_argument('--dggvtp', help='path of dggvtp (default: BUILD/bin/dggvtp)')
     p.add_argument('--smsp', help='path of smsp_distances (default: BUILD/bin/smsp_distances)')
     p.add_argument('--meshes', nargs='*', default=[],
-                   help='mesh files, e.g. /work/shared/data/meshes/*.ply (default: the bundled '
+                   help='mesh files, e.g. data/meshes/*.ply (default: the bundled '
                         + ', '.join(BUNDLED) + ' from <repo>/data/meshes)')
     p.add_argument('--repeat', type=int, default=3, help='runs per algorithm, mesh and source (default 3)')
     p.add_argument('--sources', default='0,half',

@@ -3,21 +3,19 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 #
 # Times `dggvtp --exact` on a large generated mesh (default bunny_1M: 1,018,010 vertices).
-# The mesh is generated once by the shared make_large.sh (compiles a helper the first time,
-# ~45 s) into OUT_DIR, outside the repository: never commit generated meshes.
+# The mesh is generated once by make_large.sh (next to this script; compiles a helper the first
+# time, ~45 s) from the repository's data/meshes into OUT_DIR: never commit generated meshes.
 #
 # usage: large_mesh.sh [TARGET [REPEAT [dggvtp options...]]]
 #   TARGET   a make_large.sh target: bunny_1M (default), bunny_4M, bunny_flat_aniso_1M, blade_aniso_2M, terrain_2M
 #   REPEAT   number of runs (default 3); the median propagation time is reported
 #   options  passed to dggvtp instead of the default --exact (e.g. --source 509005, --epsilon 1e-6)
 # environment:
-#   SHARED_DIR  directory holding data/make_large.sh     (default: <repo>/../shared)
 #   OUT_DIR     where the generated meshes go             (default: ${TMPDIR:-/tmp}/large_meshes)
 #   BUILD       build directory holding bin/dggvtp        (default: <repo>/build)
 #   DGGVTP      path of dggvtp                            (default: $BUILD/bin/dggvtp)
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-shared=${SHARED_DIR:-$repo/../shared}
 out=${OUT_DIR:-${TMPDIR:-/tmp}/large_meshes}
 build=${BUILD:-$repo/build}
 dggvtp=${DGGVTP:-$build/bin/dggvtp}
@@ -33,8 +31,7 @@ mesh=$out/$target.ply
 if [ -f "$mesh" ]; then
   echo "[large_mesh] using existing $mesh" >&2
 else
-  [ -f "$shared/data/make_large.sh" ] || { echo "error: $shared/data/make_large.sh not found (set SHARED_DIR)" >&2; exit 1; }
-  bash "$shared/data/make_large.sh" "$out" "$target" >&2
+  bash "$repo/benchmark/DGG_VTP_3/make_large.sh" "$out" "$target" >&2
 fi
 
 stats_dir=$(mktemp -d "${TMPDIR:-/tmp}/large_mesh.XXXXXX")

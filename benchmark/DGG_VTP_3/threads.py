@@ -9,7 +9,7 @@ the largest relative error against the exact mode's distances, and whether the d
 same bytes as with 1 thread (they must be: the rounds do not depend on the thread count).
 
 Example (from the repository root, after building dggvtp in build/; the mesh from
-benchmark/DGG_VTP_3/large_mesh.sh or ../shared/data/make_large.sh):
+benchmark/DGG_VTP_3/large_mesh.sh or benchmark/DGG_VTP_3/make_large.sh):
   python3 benchmark/DGG_VTP_3/threads.py --mesh /tmp/large_meshes/bunny_1M.ply --out threads.md
 """
 import argparse

@@ -18,8 +18,9 @@ process to its exit: it includes what no stage counts, such as freeing the memor
 On a shared machine, --wait-idle makes each run wait (at most that many seconds) until no other
 task is runnable (/proc/loadavg), three samples 0.2 s apart; a run that gave up waiting is marked.
 
-Example (from the repository root, after building dggvtp in build/):
-  python3 benchmark/DGG_VTP_3/whole_process.py --mesh /work/large/bunny_1M.ply --epsilon 1e-2 --repeat 5
+Example (from the repository root, after building dggvtp in build/; the mesh from
+benchmark/DGG_VTP_3/make_large.sh /tmp/large_meshes bunny_1M):
+  python3 benchmark/DGG_VTP_3/whole_process.py --mesh /tmp/large_meshes/bunny_1M.ply --epsilon 1e-2 --repeat 5
 """
 import argparse
 import filecmp

@@ -163,10 +163,14 @@ Raises ValueError for k outside [1, num_vertices], first out of range, an epsilo
 
 const char* const local_distance_matrix = R"(The distances within max_distance from each source vertex, as a scipy.sparse.csr_matrix of
 shape (len(sources), num_vertices) (default sources=None: every vertex, in order, a square
-matrix): row k holds every vertex at distance <= max_distance from sources[k], with its
-distance, and no other; as an array, with inf where there is no entry, it is
+matrix): row k holds every vertex whose computed distance from sources[k] is <= max_distance,
+with that distance, and no other; as an array, with inf where there is no entry, it is
 distances(sources[k], max_distance=max_distance, epsilon=epsilon), bit for bit (and the rows of
-dggvtp-batch --max-distance). The source itself is an explicit 0 (eliminate_zeros() would drop
+dggvtp-batch --max-distance). With epsilon > 0 the computed distance may exceed the exact one:
+every vertex within max_distance / (1 + epsilon) of the exact distance is there, and some within
+max_distance may not be (to have all of them: max_distance (1 + epsilon), then keep the entries
+whose certified lower bound d - b is <= max_distance, d and b from distances(...,
+return_bounds=True)). The source itself is an explicit 0 (eliminate_zeros() would drop
 it). The memory is in proportion to the entries (about 12 bytes each), never num_vertices
 squared; indices are int32 unless there are more than 2^31 entries.
 

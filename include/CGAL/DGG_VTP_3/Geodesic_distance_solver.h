@@ -196,8 +196,10 @@ public:
    *     \cgalParamDefault{`0`}
    *   \cgalParamNEnd
    *   \cgalParamNBegin{DGG_VTP_3::parameters::max_distance}
-   *     \cgalParamDescription{the propagation stops there: vertices farther get `+infinity`, the
-   *                           others their distance, as without it}
+   *     \cgalParamDescription{the propagation stops there: vertices whose computed distance is
+   *                           farther get `+infinity`, the others their distance, as without it
+   *                           (with an accuracy, every vertex within max_distance / (1 + accuracy)
+   *                           of the exact distance keeps its distance; see the user manual)}
    *     \cgalParamType{`double`, >= 0 (`+infinity` allowed)}
    *     \cgalParamDefault{`+infinity`}
    *   \cgalParamNEnd

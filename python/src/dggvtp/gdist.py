@@ -10,7 +10,11 @@ Where dggvtp differs from gdist, on purpose:
   - any array-like is taken (gdist wants float64 vertices and int32 indices);
   - ``max_distance=None`` (the default) means no limit (gdist's default is 1e100);
   - a vertex beyond ``max_distance``, or on another component, is ``inf`` in compute_gdist and
-    has no entry in the matrices (gdist may give 1e100 or store inf there);
+    has no entry in the matrices (gdist may give 1e100 or store inf there); "beyond" is said of
+    the distance computed: with ``epsilon`` > 0 every vertex within max_distance / (1 + epsilon)
+    of the exact distance is there, and some within max_distance may not be (to have all of
+    them, pass max_distance (1 + epsilon) and keep the entries whose certified lower bound d - b
+    is within it, d and b from GeodesicSolver.distances(..., return_bounds=True));
   - bad input raises ValueError with a message (gdist may crash or hang).
 As in gdist, ``is_one_indexed`` applies to ``triangles`` only: source, target and point indices
 are 0-based either way.

@@ -271,7 +271,7 @@ private:
 public:
   std::vector<FT> distance;                       // best distance found so far (+inf: not reached)
   // The least key that reached it, whatever its distance: a lower bound of the exact distance (the
-  // manual's K(v), issue 45), equal to `distance` where the path of the least key is the true
+  // manual's K(v)), equal to `distance` where the path of the least key is the true
   // source's straight one.
   std::vector<FT> least_key;
   std::vector<Incoming_directions<FT>> incoming;  // arrival directions of its best paths

@@ -45,12 +45,9 @@ struct Tuning
   // bound lies at about (a relay's distance) / epsilon, so a stop saves something once windows
   // travel that far, and how far they travel grows like the number of edges across the mesh,
   // about sqrt(vertices). Without stops the rules on keys alone keep the contract as well (a stop
-  // is a pruning the argument allows, not one it needs) and prune much by themselves. Measured
-  // (2026-11-27, CPU time of the rows against the exact mode, 650 to 1M vertices: pinion, spot,
-  // terrain_ridged, jittered_grid, coupling, bunny, bunny_1M): stops win where
-  // epsilon sqrt(vertices) is above about 10 (bunny_1M: at 1e-1 0.17 with stops, 0.41 without;
-  // 1e-2 equal) and lose below it (pinion at 1e-3: 1.40 with, 1.01 without; bunny at 1e-2:
-  // 0.44 against 0.36), both ways by up to 2.4 times.
+  // is a pruning the argument allows, not one it needs) and prune much by themselves. Measured on
+  // meshes of 650 to 1M vertices, stops win where epsilon sqrt(vertices) is above about 10 and
+  // lose below it, both ways by up to 2.4 times (benchmark/DGG_VTP_3/README.md, "Where stops pay").
   static bool stops_pay(FT accuracy, std::size_t vertices)
   {
     return CGAL::to_double(accuracy) * std::sqrt(double(vertices)) >= 10.;
