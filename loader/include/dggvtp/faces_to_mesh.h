@@ -27,17 +27,15 @@ std::size_t faces_to_mesh(const PointRange& points, const PolygonRange& polygons
 {
   using Vertex = typename CGAL::Surface_mesh<Point>::Vertex_index;
   mesh.reserve(points.size(), 2 * polygons.size(), polygons.size());
-  std::vector<Vertex> vertices;
-  vertices.reserve(points.size());
-  for(const auto& p : points)
-    vertices.push_back(mesh.add_vertex(Point(p)));
+  for(const auto& p : points) // an empty mesh numbers them 0, 1, ... as the polygons do
+    mesh.add_vertex(Point(p));
   std::size_t left_out = 0;
   std::vector<Vertex> corners;
   for(const auto& polygon : polygons)
   {
     corners.clear();
     for(std::size_t v : polygon)
-      corners.push_back(vertices[v]);
+      corners.push_back(Vertex(typename Vertex::size_type(v)));
     if(CGAL::Euler::add_face(corners, mesh) == CGAL::Surface_mesh<Point>::null_face())
       ++left_out;
   }

@@ -145,8 +145,9 @@ public:
   // of the new sources is cut there only at points whose key exceeds d(u) + |ux| >= exact(x) to the
   // earlier sources, for a prior vertex u: points strictly nearer to those, which no shortest path
   // from a new source to a vertex it wins passes (the manual, "Adding sources to a field").
-  // Windows do not stop at their distance bound then (`keys` made with stops not allowed): a stop makes its relay vertices emit at their distance over rho, and a prior
-  // relay's windows, below every prior key by that discount, would cross the whole prior field
+  // Windows do not stop at their distance bound then (`keys` made with stops not allowed): a stop
+  // makes its relay vertices emit at their distance over rho, and a prior relay's windows, below
+  // every prior key by that discount, would cross the whole prior field
   // (benchmark/DGG_VTP_3/README.md, Table 13).
   void keep_field(const Key_ratio<FT>& keys)
   {
