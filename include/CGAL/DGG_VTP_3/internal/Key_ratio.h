@@ -33,14 +33,18 @@ template <class FT>
 class Key_ratio
 {
 public:
-  // `stops_allowed`: false where stops would break the propagation's argument (see
-  // Propagation_vertices::keep_field)
-  Key_ratio(FT accuracy, std::size_t number_of_vertices, bool stops_allowed = true)
+  // Whether windows stop: where they gain; never, where stops would break the propagation's
+  // argument (see Propagation_vertices::keep_field); always, where the windows must end without
+  // relays that emit (see Propagation_query::direct_only).
+  enum class Stops { where_they_pay, never, always };
+
+  Key_ratio(FT accuracy, std::size_t number_of_vertices, Stops stops = Stops::where_they_pay)
     : m_rho(Tuning<FT>::key_ratio(accuracy))
     , m_lambda(number<FT>(1) / m_rho)
     , m_one_minus_lambda((m_rho - number<FT>(1)) / m_rho) // without cancellation for a small epsilon
     , m_k(m_one_minus_lambda * (number<FT>(1) + m_lambda) / number<FT>(2))
-    , m_stops(stops_allowed && m_rho > FT(1) && Tuning<FT>::stops_pay(accuracy, number_of_vertices))
+    , m_stops(m_rho > FT(1) && (stops == Stops::always ||
+                                (stops == Stops::where_they_pay && Tuning<FT>::stops_pay(accuracy, number_of_vertices))))
   {}
 
   bool is_exact() const { return !(m_rho > FT(1)); }

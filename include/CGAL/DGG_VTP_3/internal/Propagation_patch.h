@@ -70,6 +70,14 @@ struct Propagation_patch
     return out;
   }
 
+  // the most windows alive at once in its lists since the last call
+  std::size_t take_peak()
+  {
+    const std::size_t peak = lists.peak();
+    lists.reset_peak();
+    return peak;
+  }
+
   // its counts added to those of the whole propagation
   void add_statistics(Propagation_statistics& s) const
   {

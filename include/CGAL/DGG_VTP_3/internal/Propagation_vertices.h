@@ -14,6 +14,7 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Direct_distances.h>
 #include <CGAL/DGG_VTP_3/internal/Index_set.h>
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Key_ratio.h>
@@ -47,6 +48,7 @@ class Propagation_vertices
   using Index = typename Mesh::Index;
   using Point = Vec2<FT>;
   using T = Tuning<FT>;
+  using Emitters = typename Pseudo_source_states<FT>::Mode;
 
 public:
   // per vertex: the corner and the direction (in that corner's frame) its path arrives from
@@ -70,11 +72,12 @@ public:
     , pseudo_sources(mesh, partition)
   {}
 
-  // Every vertex unreached, for a propagation of key ratio `keys` that records the pseudo-sources
-  // of the paths (`origins`) and where they arrive from (`arrivals`); the records of a propagation
-  // that did not ask for them are empty.
-  void reset(const Key_ratio<FT>& keys, bool origins, bool arrivals)
+  // Every vertex unreached, for a propagation of key ratio `keys` for `query`, which may ask to
+  // record the pseudo-sources of the paths and where they arrive from; the records of a
+  // propagation that did not ask for them are empty.
+  void reset(const Key_ratio<FT>& keys, const Propagation_query<FT>& query)
   {
+    const bool origins = query.record_origins, arrivals = query.record_arrivals;
     for(Index v : m_reached)
     {
       distance[v] = least_key[v] = Number_type_math<FT>::infinity();
@@ -85,10 +88,11 @@ public:
       if(!m_arrival.empty())
         m_arrival[v] = no_arrival();
     }
+    direct.reset(m_reached, query.direct_only ? query.vertex_sources.at(0) : no_origin(), distance.size());
     m_reached.clear();
     m_reached_by_patch.clear();
     m_keys = keys;
-    pseudo_sources.reset(!keys.is_exact());
+    pseudo_sources.reset(query.direct_only ? Emitters::direct_only : keys.is_exact() ? Emitters::exact : Emitters::dgg);
     if(origins && m_origin.empty())
       m_origin.assign(distance.size(), no_origin());
     if(arrivals && m_arrival.empty())
@@ -101,8 +105,10 @@ public:
   void start(const Key_ratio<FT>& keys, const Propagation_query<FT>& query)
   {
     CGAL_precondition(!query.add_to_field || query.record_origins);
+    CGAL_precondition(!query.direct_only || (!query.add_to_field && !keys.is_exact() && query.vertex_sources.size() == 1 &&
+                                           query.point_sources.empty()));
     if(!query.add_to_field || query.prior != nullptr)
-      reset(keys, query.record_origins, query.record_arrivals);
+      reset(keys, query);
     if(query.prior != nullptr)
       load_field(*query.prior);
     if(query.add_to_field)
@@ -162,7 +168,7 @@ public:
     m_reached.clear();
     m_reached_by_patch.clear();
     m_keys = keys;
-    pseudo_sources.reset(!keys.is_exact());
+    pseudo_sources.reset(keys.is_exact() ? Emitters::exact : Emitters::dgg);
   }
 
   // a prior field for keep_field(), after reset()
@@ -197,7 +203,41 @@ public:
   // of it (the same point, see Vertex_copies.h), at the copy's distance `d`: copies are singular,
   // so no direction is recorded, and only a shorter distance counts (a tie would go back and
   // forth between the copies).
+  // In a direct-only run, a vertex given its first w (see Direct_distances) is queued too, to emit.
   bool relax(Index v, FT d, FT key, Index corner, const Point& direction, Index from)
+  {
+    const bool first_w = direct.reach(v, d, from);
+    if(first_w)
+      pseudo_sources.make_direct_emitter(v);
+    return relax_distance(v, d, key, corner, direction, from) || first_w;
+  }
+
+  // The key of vertex `v` at distance `d`, as the ICH rule compares it: that of its windows (d /
+  // rho) if it emits all around, else its distance, which no path through it beats by key (a path
+  // bending there is beaten by one passing beside it, as in the exact algorithm, and along a
+  // straight path a key grows no faster than the distance). `own`: whether `v` is of the patch
+  // that asks; another patch's vertex may become a pseudo-source during the round, so only what
+  // the mesh makes one counts there, and it may leave the prior field, so it counts as in it if
+  // it was at the start of the run (d is the largest key, the one that cuts the least).
+  // In a direct-only run: the least key that reached it, or w / rho, its windows' (see
+  // Direct_distances), both of the form w(x, c) / rho + a path from c, c an out-edge.
+  FT key(Index v, FT d, bool own) const
+  {
+    if(direct.active())
+      return (std::min)(least_key[v], m_keys.key(direct[v]));
+    if(own ? is_source[v] == prior : !m_in_field.empty() && m_in_field[v])
+      return d;
+    const bool emits = is_source[v] || (own ? pseudo_sources.emits(v) : m_mesh.is_exact_pseudo_source(v));
+    return emits ? m_keys.key(d) : d;
+  }
+
+  // the distance `v` sends its windows out with, when it emits
+  FT emission_distance(Index v) const { return direct.active() ? direct[v] : distance[v]; }
+
+private:
+  static Arrival no_arrival() { return Arrival{Mesh::no_halfedge, Point{number<FT>(0), number<FT>(0)}}; }
+
+  bool relax_distance(Index v, FT d, FT key, Index corner, const Point& direction, Index from)
   {
     least_key[v] = (std::min)(least_key[v], key);
     const FT dv = distance[v];
@@ -237,24 +277,6 @@ public:
     return false;
   }
 
-  // The key of vertex `v` at distance `d`, as the ICH rule compares it: that of its windows (d /
-  // rho) if it emits all around, else its distance, which no path through it beats by key (a path
-  // bending there is beaten by one passing beside it, as in the exact algorithm, and along a
-  // straight path a key grows no faster than the distance). `own`: whether `v` is of the patch
-  // that asks; another patch's vertex may become a pseudo-source during the round, so only what
-  // the mesh makes one counts there, and it may leave the prior field, so it counts as in it if
-  // it was at the start of the run (d is the largest key, the one that cuts the least).
-  FT key(Index v, FT d, bool own) const
-  {
-    if(own ? is_source[v] == prior : !m_in_field.empty() && m_in_field[v])
-      return d;
-    const bool emits = is_source[v] || (own ? pseudo_sources.emits(v) : m_mesh.is_exact_pseudo_source(v));
-    return emits ? m_keys.key(d) : d;
-  }
-
-private:
-  static Arrival no_arrival() { return Arrival{Mesh::no_halfedge, Point{number<FT>(0), number<FT>(0)}}; }
-
   const Mesh& m_mesh;
   const Patch_partition<FT>& m_partition;
   Key_ratio<FT> m_keys;
@@ -280,6 +302,7 @@ public:
   std::vector<char> is_source;
   static constexpr char prior = 2;
   Pseudo_source_states<FT> pseudo_sources;        // DGG-VTP's vertices that emit all around
+  Direct_distances<FT> direct;                    // in a direct-only run, the source's out-edges
 };
 
 } // namespace internal

@@ -35,6 +35,7 @@ namespace internal {
 // distance / rho as key (see Window), and again whenever its distance drops. The others, as in
 // the exact algorithm, leave the paths through them to the windows that pass beside them. When
 // epsilon is small few windows stop, and DGG-VTP then costs about what the exact algorithm does.
+// A direct-only run (Propagation_query::direct_only) has no pseudo-source but its source.
 template <class FT>
 class Pseudo_source_states
 {
@@ -42,24 +43,26 @@ class Pseudo_source_states
   using Index = typename Mesh::Index;
 
 public:
+  enum class Mode { exact, dgg, direct_only };
+
   // Every vertex starts in the state the mesh gives it (in DGG-VTP, its exact pseudo-sources emit;
-  // in the exact mode (`dgg` false) no vertex is one: the exact algorithm has its own rules). That
-  // state is read from the mesh, not written per vertex, so that a propagation starts (reset())
-  // in the time of the vertices the previous one changed, not of the mesh.
+  // in the exact mode no vertex is one: the exact algorithm has its own rules; nor in a direct-only
+  // run). That state is read from the mesh, not written per vertex, so that a propagation starts
+  // (reset()) in the time of the vertices the previous one changed, not of the mesh.
   // `partition`: the patches that change the vertices' states, each its own vertices
   Pseudo_source_states(const Mesh& mesh, const Patch_partition<FT>& partition)
     : m_mesh(mesh), m_partition(partition), m_state(mesh.number_of_vertices(), as_meshed)
     , m_changed(mesh.number_of_vertices(), partition.size())
   {}
 
-  // back to the mesh's states, for a propagation of mode `dgg`
-  void reset(bool dgg)
+  // back to the mesh's states, for a propagation of mode `mode`
+  void reset(Mode mode)
   {
     for(std::size_t k = 0; k < m_changed.shards(); ++k)
       for(Index v : m_changed.members(k))
         m_state[v] = as_meshed;
     m_changed.clear();
-    m_dgg = dgg;
+    m_mode = mode;
   }
 
   // `v` emits all around, or will
@@ -74,10 +77,11 @@ public:
     return true;
   }
 
-  // a shorter path reached `v`: it emits again when popped
+  // a shorter path reached `v`: it emits again when popped (not in a direct-only run: it emits
+  // with the length of its straight path, not with its distance)
   void distance_dropped(Index v)
   {
-    if(m_state[v] == emitted)
+    if(m_state[v] == emitted && m_mode != Mode::direct_only)
       m_state[v] = to_emit;
   }
 
@@ -85,10 +89,17 @@ public:
   // (again) to emit
   bool make_emitter(Index v)
   {
-    if(state(v) != not_emitting)
+    if(m_mode == Mode::direct_only || state(v) != not_emitting)
       return false;
     set(v, to_emit);
     return true;
+  }
+
+  // in a direct-only run, `v` has a straight path from the source (see Direct_distances): it emits
+  void make_direct_emitter(Index v)
+  {
+    if(state(v) == not_emitting)
+      set(v, to_emit);
   }
 
 private:
@@ -99,7 +110,7 @@ private:
     const State s = m_state[v];
     if(s != as_meshed)
       return s;
-    return m_dgg && m_mesh.is_exact_pseudo_source(v) ? to_emit : not_emitting;
+    return m_mode == Mode::dgg && m_mesh.is_exact_pseudo_source(v) ? to_emit : not_emitting;
   }
 
   void set(Index v, State s)
@@ -110,7 +121,7 @@ private:
 
   const Mesh& m_mesh;
   const Patch_partition<FT>& m_partition;
-  bool m_dgg = false;
+  Mode m_mode = Mode::exact;
   std::vector<State> m_state; // per vertex
   Index_set m_changed;        // the vertices whose state may not be as_meshed
 };

@@ -62,6 +62,7 @@ namespace internal {
 // relay vertices of the windows it stops as pseudo-sources (see Pseudo_source_states).
 // It runs on one patch of faces at a time (Patch_partition), in rounds that a Round_scheduler
 // drives; what it does to another patch's part of the mesh goes through the scheduler's hand_off().
+// A direct-only run (the certified graph's build rule) changes who emits: see Direct_distances.
 template <class FT>
 class Window_propagation
 {
@@ -71,6 +72,7 @@ class Window_propagation
   using Win = Window<FT>;
   using Scheduler = Round_scheduler<FT>;
   using T = Tuning<FT>;
+  using Stops = typename Key_ratio<FT>::Stops;
   friend Scheduler;
 
 public:
@@ -139,6 +141,7 @@ public:
   const Point_targets<FT>& point_targets() const { return m_targets; } // how their paths arrive
 
   const std::vector<FT>& distances() const { return m_vertices.distance; }
+  const std::vector<FT>& direct_distances() const { return m_vertices.direct.all(); } // see Direct_distances
   // per vertex, a lower bound of its exact distance (see Propagation_vertices::finish)
   const std::vector<FT>& lower_bounds() const { return m_vertices.least_key; }
   // the vertices the run gave a distance (+infinity beyond max_distance); the others are as before
@@ -153,7 +156,8 @@ private:
   void reset(const Propagation_query<FT>& query, FT accuracy)
   {
     m_reusable = false;
-    m_keys = Key_ratio<FT>(accuracy, m_mesh.number_of_vertices(), !query.add_to_field); // see keep_field()
+    m_keys = Key_ratio<FT>(accuracy, m_mesh.number_of_vertices(), // see keep_field() and Propagation_query::direct_only
+                           query.add_to_field ? Stops::never : query.direct_only ? Stops::always : Stops::where_they_pay);
     m_emission.set_keys(m_keys);
     for(Index k : m_scheduler.woken())
       m_patches[k].clear(m_scheduled);
@@ -185,7 +189,7 @@ private:
   bool query_is_answered(FT nearest)
   {
     m_limit = early_termination_limit(*m_query, m_targets, m_mesh, m_vertices.distance);
-    const bool answered = nothing_pending_below(m_limit, nearest, m_keys, m_patches, m_scheduler.woken());
+    const bool answered = m_vertices.direct.done() || nothing_pending_below(m_limit, nearest, m_keys, m_patches, m_scheduler.woken());
     m_pending_keys = answered ? least_key_left(m_limit, m_keys) : infinity();
     return answered;
   }
@@ -198,7 +202,7 @@ private:
   {
     Patch& p = m_patches[k];
     propagate_scheduled_lists(p);
-    while(!p.queue.empty() && p.queue.top().first <= limit)
+    while(!p.queue.empty() && p.queue.top().first <= limit && !m_vertices.direct.done())
     {
       const Queue_entry top = p.queue.top();
       p.queue.pop();
@@ -208,7 +212,7 @@ private:
       ++p.stats.vertices_popped;
       Emission_out out{*this, p}; // lines 10-13: v as a pseudo-source
       if(is_dgg() ? m_vertices.is_source[v] || m_vertices.pseudo_sources.emit_at_pop(v) : m_vertices.is_source[v] || m_mesh.is_singular(v))
-        m_emission.all_around(v, m_vertices.distance[v], out);
+        m_emission.all_around(v, m_vertices.emission_distance(v), out);
       else if(!is_dgg() && m_mesh.is_exact_pseudo_source(v))
         m_emission.in_shadow(v, m_vertices.distance[v], m_vertices.incoming[v], out);
       enter_propagation_region(p, v);
@@ -217,12 +221,7 @@ private:
     p.lists.release_if_empty();
   }
 
-  std::size_t take_peak(Index k)
-  {
-    const std::size_t peak = m_patches[k].lists.peak();
-    m_patches[k].lists.reset_peak();
-    return peak;
-  }
+  std::size_t take_peak(Index k) { return m_patches[k].take_peak(); }
 
   // after the first round, then at most every 0.1 s (see Progress_report)
   void report_progress()
@@ -338,6 +337,7 @@ private:
     if(m_scheduler.template hand_off<typename Scheduler::Window_message>(p.id, m_partition.patch_of_halfedge(h), h, w))
       return;
     p.lists.push(h - p.first_halfedge, w);
+    m_vertices.direct.stored(w);
     if(m_in_region.contains(Mesh::face(h)))
       schedule(p, h);
   }
@@ -360,6 +360,7 @@ private:
   {
     refuse_windows_beyond(m_window_limit, p.lists.created());
     p.lists.take(h - p.first_halfedge, p.buffer);
+    m_vertices.direct.taken(p.buffer);
     const Index apex_vertex = m_mesh.source(Mesh::prev(h));
     const Point c = m_mesh.apex(h);
 
@@ -369,7 +370,7 @@ private:
     std::size_t kept = 0;
     for(Win& w : p.buffer)
     {
-      if(w.beyond_bound(distance_to_interval(w.source, w.b0, w.b1)))
+      if(w.beyond_bound(distance_to_interval(w.source, w.b0, w.b1)) && m_vertices.direct.may_stop(w))
         stop_at_bound(p, w);
       else if(trim_by_end_vertices(w, len, ends.a, ends.b))
         p.buffer[kept++] = w;
@@ -471,8 +472,6 @@ private:
   }
 
   bool is_dgg() const { return !m_keys.is_exact(); }
-
-  // ---------------------------------------------------------------------------------------------
 
   const Mesh& m_mesh;
   const Patch_partition<FT>& m_partition;
