@@ -80,12 +80,16 @@ public:
       m_started = true;
     }
   }
+  // (nothing is written outside a direct-only run: the patches of a parallel one call them at once)
   void taken(const std::vector<Window<FT>>& windows)
   {
+    if(m_root == none())
+      return;
     for(const Window<FT>& w : windows)
-      m_live -= w.origin == m_root && m_root != none();
+      if(w.origin == m_root)
+        --m_live;
   }
-  bool done() const { return m_started && m_live == 0; }
+  bool done() const { return m_root != none() && m_started && m_live == 0; }
 
   // Whether a window may stop at its distance bound: one of x's if its relays are out-edges no
   // longer than its straight paths to them (the beam is left to them), any other always.
