@@ -208,7 +208,7 @@ public:
   {
     const bool first_w = direct.reach(v, d, from);
     if(first_w)
-      pseudo_sources.make_direct_emitter(v);
+      pseudo_sources.make_emitter(v);
     return relax_distance(v, d, key, corner, direction, from) || first_w;
   }
 

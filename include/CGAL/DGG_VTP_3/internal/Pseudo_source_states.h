@@ -35,7 +35,8 @@ namespace internal {
 // distance / rho as key (see Window), and again whenever its distance drops. The others, as in
 // the exact algorithm, leave the paths through them to the windows that pass beside them. When
 // epsilon is small few windows stop, and DGG-VTP then costs about what the exact algorithm does.
-// A direct-only run (Propagation_query::direct_only) has no pseudo-source but its source.
+// In a direct-only run (Propagation_query::direct_only) the vertices with a straight path from the
+// source emit, and only they (see Direct_distances).
 template <class FT>
 class Pseudo_source_states
 {
@@ -89,17 +90,10 @@ public:
   // (again) to emit
   bool make_emitter(Index v)
   {
-    if(m_mode == Mode::direct_only || state(v) != not_emitting)
+    if(state(v) != not_emitting)
       return false;
     set(v, to_emit);
     return true;
-  }
-
-  // in a direct-only run, `v` has a straight path from the source (see Direct_distances): it emits
-  void make_direct_emitter(Index v)
-  {
-    if(state(v) == not_emitting)
-      set(v, to_emit);
   }
 
 private:

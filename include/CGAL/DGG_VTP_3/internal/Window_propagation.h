@@ -463,10 +463,11 @@ private:
       make_emitter(p, v);
   }
 
-  // vertex `v` emits all around: when it is popped next (again, if it was already)
+  // vertex `v` emits all around when popped next (again, if it was); not in a direct-only run (Direct_distances)
   void make_emitter(Patch& p, Index v)
   {
-    if(!m_scheduler.template hand_off<typename Scheduler::Relay_message>(p.id, m_partition.owner(v), v) &&
+    if(!m_vertices.direct.active() &&
+       !m_scheduler.template hand_off<typename Scheduler::Relay_message>(p.id, m_partition.owner(v), v) &&
        m_vertices.pseudo_sources.make_emitter(v))
       p.queue.push(Queue_entry(m_vertices.distance[v], v));
   }
