@@ -47,12 +47,6 @@
 
 #include <csignal>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-#endif
-
 #include <algorithm>
 #include <atomic>
 #include <charconv>
@@ -739,19 +733,9 @@ Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, doub
   // the rows of `file_vertices`, each handed to `row` as the library gives it
   const auto each_row = [soup, solver, np](const std::vector<std::size_t>& file_vertices, long threads, const auto& row) {
     const std::vector<std::vector<std::size_t>> sets = dggvtp::solver_vertex_sets(*soup, file_vertices);
-#ifdef CGAL_LINKED_WITH_TBB
-    if(threads != 1 && file_vertices.size() > 1)
-    {
-      std::optional<tbb::global_control> limit;
-      if(threads > 0)
-        limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-      (*solver)->template compute_distances_from_each_source_set<CGAL::Parallel_tag>(sets, row, np);
-      return;
-    }
-#else
-    (void)threads;
-#endif
-    (*solver)->template compute_distances_from_each_source_set<CGAL::Sequential_tag>(sets, row, np);
+    dggvtp::with_threads(file_vertices.size() > 1 ? threads : 1, [&](auto tag) {
+      (*solver)->template compute_distances_from_each_source_set<decltype(tag)>(sets, row, np);
+    });
   };
   prepared.rows = [each_row, bounds, values](const std::vector<std::size_t>& file_vertices, long threads,
                                              const std::function<void(std::size_t, Row_values&&)>& done) {

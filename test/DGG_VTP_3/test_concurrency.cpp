@@ -5,7 +5,7 @@
 
 // The concurrency tags: compute_distances (one propagation, its patches shared among threads) and
 // compute_distances_from_each_source (one field per source, the sources shared among threads),
-// with Sequential_tag and, when this executable is linked with TBB, Parallel_tag on 1, 2 and 4
+// with Sequential_tag and, when this executable is linked with TBB, Parallel_tag on 1, 2, 4 and 8
 // threads (more threads than cores is the point: the work must be shared out differently and
 // give the same bits).
 
@@ -14,7 +14,6 @@
 #include <CGAL/tags.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
 #endif
 
 #include <array>
@@ -131,12 +130,11 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(each_source_equals_single_queries, Config, All_con
       const Single_queries<Mesh> single = single_queries(mesh, solver, sources, accuracy);
       check_against_single_queries<CGAL::Sequential_tag>(mesh, solver, sources, accuracy, single, what + ", sequential");
 #ifdef CGAL_LINKED_WITH_TBB
-      for(int threads : {1, 2, 4})
-      {
-        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        check_against_single_queries<CGAL::Parallel_tag>(mesh, solver, sources, accuracy, single,
-                                                         what + ", " + std::to_string(threads) + " threads");
-      }
+      for(int threads : {1, 2, 4, 8})
+        on_threads(threads, [&] {
+          check_against_single_queries<CGAL::Parallel_tag>(mesh, solver, sources, accuracy, single,
+                                                           what + ", " + std::to_string(threads) + " threads");
+        });
 #endif
     }
   }
@@ -192,21 +190,20 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(one_propagation_is_the_same_for_any_thread_count, 
       }
       BOOST_TEST(outside == 0u, what << ": " << outside << " distances outside the accuracy");
 #ifdef CGAL_LINKED_WITH_TBB
-      for(int threads : {1, 2, 4})
-      {
-        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        const Field_map<Mesh> parallel = fresh_maps(mesh, 1).front();
-        const CGAL::DGG_VTP_3::Propagation_statistics statistics =
-          solver.template compute_distances<CGAL::Parallel_tag>(source, parallel, CGAL::parameters::accuracy(accuracy));
-        std::size_t differences = 0;
-        for(auto v : vertices(mesh))
-          if(!same_bits(get(parallel, v), get(sequential, v)))
-            ++differences;
-        BOOST_TEST(differences == 0u, what << ", " << threads << " threads: " << differences << " distances differ");
-        BOOST_TEST(statistics.windows_created == expected.windows_created, what << ", " << threads << " threads");
-        BOOST_TEST(statistics.windows_peak == expected.windows_peak, what << ", " << threads << " threads");
-        BOOST_TEST(statistics.vertices_popped == expected.vertices_popped, what << ", " << threads << " threads");
-      }
+      for(int threads : {1, 2, 4, 8})
+        on_threads(threads, [&] {
+          const Field_map<Mesh> parallel = fresh_maps(mesh, 1).front();
+          const CGAL::DGG_VTP_3::Propagation_statistics statistics =
+            solver.template compute_distances<CGAL::Parallel_tag>(source, parallel, CGAL::parameters::accuracy(accuracy));
+          std::size_t differences = 0;
+          for(auto v : vertices(mesh))
+            if(!same_bits(get(parallel, v), get(sequential, v)))
+              ++differences;
+          BOOST_TEST(differences == 0u, what << ", " << threads << " threads: " << differences << " distances differ");
+          BOOST_TEST(statistics.windows_created == expected.windows_created, what << ", " << threads << " threads");
+          BOOST_TEST(statistics.windows_peak == expected.windows_peak, what << ", " << threads << " threads");
+          BOOST_TEST(statistics.vertices_popped == expected.vertices_popped, what << ", " << threads << " threads");
+        });
 #endif
     }
   }
@@ -249,18 +246,17 @@ BOOST_AUTO_TEST_CASE(surface_points_and_early_stop_are_the_same_for_any_thread_c
     const std::vector<double> expected = run(CGAL::Sequential_tag(), expected_targets, expected_labels);
     BOOST_TEST(expected_targets.size() == targets.size());
 #ifdef CGAL_LINKED_WITH_TBB
-    for(int threads : {1, 2, 4})
-    {
-      const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-      const std::vector<double> got = run(CGAL::Parallel_tag(), got_targets, got_labels);
-      std::size_t differences = 0;
-      for(std::size_t i = 0; i < got.size(); ++i)
-        differences += !same_bits(got[i], expected[i]);
-      BOOST_TEST(differences == 0u, threads << " threads, accuracy " << accuracy);
-      BOOST_TEST(got_labels == expected_labels, boost::test_tools::per_element());
-      for(std::size_t k = 0; k < targets.size(); ++k)
-        BOOST_TEST(same_bits(got_targets[k], expected_targets[k]));
-    }
+    for(int threads : {1, 2, 4, 8})
+      on_threads(threads, [&] {
+        const std::vector<double> got = run(CGAL::Parallel_tag(), got_targets, got_labels);
+        std::size_t differences = 0;
+        for(std::size_t i = 0; i < got.size(); ++i)
+          differences += !same_bits(got[i], expected[i]);
+        BOOST_TEST(differences == 0u, threads << " threads, accuracy " << accuracy);
+        BOOST_TEST(got_labels == expected_labels, boost::test_tools::per_element());
+        for(std::size_t k = 0; k < targets.size(); ++k)
+          BOOST_TEST(same_bits(got_targets[k], expected_targets[k]));
+      });
 #endif
   }
 }
@@ -311,7 +307,7 @@ void check_source_sets(const Solver& solver, const std::vector<std::vector<Verte
   std::vector<CGAL::DGG_VTP_3::Propagation_statistics> statistics(sets.size());
   std::vector<int> calls(sets.size(), 0);
 #ifdef CGAL_LINKED_WITH_TBB
-  const int runs = 4; // sequential, then 1, 2 and 4 threads
+  const int runs = 5; // sequential, then 1, 2, 4 and 8 threads
 #else
   const int runs = 1;
 #endif
@@ -325,13 +321,12 @@ void check_source_sets(const Solver& solver, const std::vector<std::vector<Verte
   for(std::size_t k = 0; k < sets.size(); ++k)
     check_row(sets[k], rows[k], statistics[k], what + ", sequential, set " + std::to_string(k));
 #ifdef CGAL_LINKED_WITH_TBB
-  for(int threads : {1, 2, 4})
-  {
-    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    solver.template compute_distances_from_each_source_set<CGAL::Parallel_tag>(sets, row, np);
-    for(std::size_t k = 0; k < sets.size(); ++k)
-      check_row(sets[k], rows[k], statistics[k], what + ", " + std::to_string(threads) + " threads, set " + std::to_string(k));
-  }
+  for(int threads : {1, 2, 4, 8})
+    on_threads(threads, [&] {
+      solver.template compute_distances_from_each_source_set<CGAL::Parallel_tag>(sets, row, np);
+      for(std::size_t k = 0; k < sets.size(); ++k)
+        check_row(sets[k], rows[k], statistics[k], what + ", " + std::to_string(threads) + " threads, set " + std::to_string(k));
+    });
 #endif
   for(std::size_t k = 0; k < sets.size(); ++k)
     BOOST_TEST(calls[k] == runs, what << ", set " << k);

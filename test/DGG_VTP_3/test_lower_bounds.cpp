@@ -12,7 +12,6 @@
 #include "test_utilities.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
 #endif
 
 using namespace dggvtp_test;
@@ -148,14 +147,13 @@ BOOST_AUTO_TEST_CASE(same_bits_on_every_solver_and_tag)
   BOOST_TEST((ks == k));
   BOOST_TEST((k != d), "epsilon 1e-2 certifies an interval, not every distance");
 #ifdef CGAL_LINKED_WITH_TBB
-  for(int threads : {1, 2, 4})
-  {
-    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    soup_solver.compute_distances<CGAL::Parallel_tag>(
-      std::size_t(7), CGAL::make_property_map(ds),
-      DP::lower_bound_map(CGAL::make_property_map(ks), CGAL::parameters::accuracy(1e-2)));
-    BOOST_TEST((ks == k), threads << " threads");
-  }
+  for(int threads : {1, 2, 4, 8})
+    on_threads(threads, [&] {
+      soup_solver.compute_distances<CGAL::Parallel_tag>(
+        std::size_t(7), CGAL::make_property_map(ds),
+        DP::lower_bound_map(CGAL::make_property_map(ks), CGAL::parameters::accuracy(1e-2)));
+      BOOST_TEST((ks == k), threads << " threads");
+    });
 #endif
 }
 

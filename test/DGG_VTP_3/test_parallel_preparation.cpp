@@ -3,7 +3,7 @@
 //
 // Author(s): DGG-VTP for CGAL team
 
-// The preparation with the named parameter concurrency_tag: on 1, 2 and 4 threads (more threads
+// The preparation with the named parameter concurrency_tag: on 1, 2, 4 and 8 threads (more threads
 // than cores is the point: the blocks are shared out differently) the prepared mesh and the patch
 // partition are those of Sequential_tag bit for bit, and so is every distance; an error names the
 // element the sequential preparation names. Nothing here measures time.
@@ -15,7 +15,6 @@
 #include <CGAL/tags.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
 #endif
 
 #include <algorithm>
@@ -69,17 +68,14 @@ std::vector<std::pair<std::string, Soup>> test_soups()
   return soups;
 }
 
-// runs `f(threads)` under TBB's limits of 1, 2 and 4 threads (without TBB, once: then
-// Parallel_if_available_tag is Sequential_tag)
+// runs `f(threads)` on 1, 2, 4 and 8 threads (without TBB, once: then Parallel_if_available_tag
+// is Sequential_tag)
 template <class F>
-void on_threads(const F& f)
+void on_each_thread_count(const F& f)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  for(int threads : {1, 2, 4})
-  {
-    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    f(threads);
-  }
+  for(int threads : {1, 2, 4, 8})
+    on_threads(threads, [&] { f(threads); });
 #else
   f(1);
 #endif
@@ -164,7 +160,7 @@ BOOST_AUTO_TEST_CASE(prepared_mesh_is_the_same_for_any_thread_count)
   {
     const auto sequential = prepared<CGAL::Sequential_tag>(soup);
     BOOST_TEST(sequential.first.number_of_non_manifold_vertices() == (name == "pinched grids" ? 1u : 0u), name);
-    on_threads([&, &name = name, &soup = soup](int threads) {
+    on_each_thread_count([&, &name = name, &soup = soup](int threads) {
       BOOST_TEST(differences(prepared<CGAL::Parallel_if_available_tag>(soup), sequential) == 0u,
                  name << ", " << threads << " threads");
     });
@@ -182,7 +178,7 @@ BOOST_AUTO_TEST_CASE(distances_are_the_same_for_any_thread_count)
   {
     const std::vector<Epick::Point_3> points = epick_points(soup);
     const std::vector<std::vector<double>> reference = fields(Soup_solver(points, soup.faces));
-    on_threads([&, &name = name, &soup = soup](int threads) {
+    on_each_thread_count([&, &name = name, &soup = soup](int threads) {
       BOOST_TEST(differences(fields(Soup_solver(points, soup.faces, tag)), reference) == 0u,
                  name << ", soup solver, " << threads << " threads");
     });
@@ -192,7 +188,7 @@ BOOST_AUTO_TEST_CASE(distances_are_the_same_for_any_thread_count)
     // frames of another corner round otherwise
     const Mesh mesh = make_mesh<Mesh>(soup);
     const std::vector<std::vector<double>> mesh_reference = fields(Mesh_solver(mesh), &mesh);
-    on_threads([&, &name = name](int threads) {
+    on_each_thread_count([&, &name = name](int threads) {
       BOOST_TEST(differences(fields(Mesh_solver(mesh, tag), &mesh), mesh_reference) == 0u,
                  name << ", mesh solver, " << threads << " threads");
     });
@@ -224,7 +220,7 @@ BOOST_AUTO_TEST_CASE(errors_are_the_same_for_any_thread_count)
   };
   const std::string sequential = message(DP::concurrency_tag(CGAL::Sequential_tag()));
   BOOST_TEST(sequential.find("is degenerate") != std::string::npos, sequential);
-  on_threads([&](int threads) {
+  on_each_thread_count([&](int threads) {
     BOOST_TEST(message(DP::concurrency_tag(CGAL::Parallel_if_available_tag())) == sequential, threads << " threads");
   });
 }

@@ -16,7 +16,6 @@
 #include <CGAL/tags.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
 #endif
 
 #include <algorithm>
@@ -176,14 +175,13 @@ BOOST_AUTO_TEST_CASE(parallel_rounds_give_the_sequential_bits)
       const Answer expected = answer<CGAL::Sequential_tag>(solver, source, accuracy, kind);
       const int runs = kind == Kind::whole ? runs_per_thread_count() : (runs_per_thread_count() + 3) / 4;
       for(int threads : {2, 4, 8})
-      {
-        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        int differ = 0;
-        for(int run = 0; run < runs; ++run)
-          differ += !same(answer<CGAL::Parallel_tag>(solver, source, accuracy, kind), expected);
-        BOOST_TEST(differ == 0, name(kind) << ", accuracy " << accuracy << ", " << threads << " threads: "
-                                << differ << " of " << runs << " runs differ from Sequential_tag");
-      }
+        on_threads(threads, [&] {
+          int differ = 0;
+          for(int run = 0; run < runs; ++run)
+            differ += !same(answer<CGAL::Parallel_tag>(solver, source, accuracy, kind), expected);
+          BOOST_TEST(differ == 0, name(kind) << ", accuracy " << accuracy << ", " << threads << " threads: "
+                                  << differ << " of " << runs << " runs differ from Sequential_tag");
+        });
     }
 }
 
@@ -210,14 +208,13 @@ BOOST_AUTO_TEST_CASE(farthest_point_sampling_gives_the_sequential_bits)
     std::vector<std::size_t> l0, l;
     const std::vector<std::size_t> expected = sample(CGAL::Sequential_tag(), d0, l0);
     for(int threads : {2, 4, 8})
-    {
-      const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-      int differ = 0;
-      for(int run = 0; run < (runs_per_thread_count() + 3) / 4; ++run)
-        differ += !(sample(CGAL::Parallel_tag(), d, l) == expected && same_bits(d, d0) && l == l0);
-      BOOST_TEST(differ == 0, "accuracy " << accuracy << ", " << threads << " threads: " << differ
-                                          << " samplings differ from Sequential_tag");
-    }
+      on_threads(threads, [&] {
+        int differ = 0;
+        for(int run = 0; run < (runs_per_thread_count() + 3) / 4; ++run)
+          differ += !(sample(CGAL::Parallel_tag(), d, l) == expected && same_bits(d, d0) && l == l0);
+        BOOST_TEST(differ == 0, "accuracy " << accuracy << ", " << threads << " threads: " << differ
+                                            << " samplings differ from Sequential_tag");
+      });
   }
 }
 #endif
@@ -239,10 +236,12 @@ BOOST_AUTO_TEST_CASE(a_query_that_stops_early_leaves_nothing_behind)
       BOOST_TEST(same(answer<CGAL::Sequential_tag>(solver, source, accuracy, Kind::whole), fresh),
                  "source " << source << ", accuracy " << accuracy << ", sequential");
 #ifdef CGAL_LINKED_WITH_TBB
-      const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-      answer<CGAL::Parallel_tag>(solver, source, accuracy, Kind::targets);
-      BOOST_TEST(same(answer<CGAL::Parallel_tag>(solver, source, accuracy, Kind::whole), fresh),
-                 "source " << source << ", accuracy " << accuracy << ", 2 threads");
+      for(int threads : {2, 8})
+        on_threads(threads, [&] {
+          answer<CGAL::Parallel_tag>(solver, source, accuracy, Kind::targets);
+          BOOST_TEST(same(answer<CGAL::Parallel_tag>(solver, source, accuracy, Kind::whole), fresh),
+                     "source " << source << ", accuracy " << accuracy << ", " << threads << " threads");
+        });
 #endif
     }
 }

@@ -25,6 +25,11 @@
 
 #include <boost/test/unit_test.hpp>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#endif
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -36,6 +41,24 @@
 
 #ifndef DGG_VTP_3_DATA_DIR
 #error "DGG_VTP_3_DATA_DIR must be defined to the directory of the bundled meshes"
+#endif
+
+#ifdef CGAL_LINKED_WITH_TBB
+// Runs `f()` on `threads` real threads: in a TBB arena of that many, with TBB's process-wide limit
+// on workers raised to it (an arena alone gets no more threads than the cores: 8 would run on 2 on
+// the CI machine, and their interleavings would never be tried). Checks that the arena has them.
+template <class F>
+void on_threads(int threads, const F& f)
+{
+  const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+  tbb::task_arena arena(threads);
+  arena.execute([&] {
+    BOOST_REQUIRE_EQUAL(tbb::this_task_arena::max_concurrency(), threads);
+    BOOST_REQUIRE_EQUAL(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism),
+                        std::size_t(threads));
+    f();
+  });
+}
 #endif
 
 // ---------------------------------------------------------------------------------------------
