@@ -4,8 +4,8 @@
 // Author(s): DGG-VTP for CGAL team
 //
 // The deciding experiment of the certified geodesic graph (issue 54; the design note's section 7):
-// one direct-only propagation (internal::Propagation_query::direct_only) from every vertex, whose
-// reached vertices are the vertex's out-edges, weighted with the distances found:
+// one direct-only propagation (internal/Geodesic_graph_build.h) from every vertex, whose reached
+// vertices are the vertex's out-edges, weighted with the distances found:
 //
 //   geodesic_graph_experiment MESH EPSILON OUT.npz [THREADS]
 //
@@ -20,6 +20,8 @@
 #include <dggvtp/threads.h>
 
 #include <CGAL/DGG_VTP_3.h>
+#include <CGAL/DGG_VTP_3/internal/Geodesic_graph_build.h>
+#include <CGAL/DGG_VTP_3/internal/unfold_input.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
@@ -91,7 +93,15 @@ int main(int argc, char** argv)
         return 1;
       }
 
-    const auto& core = CGAL::DGG_VTP_3::internal::Core_of_solver::core(*solver);
+    // the build runs on a mesh prepared as the solver's is (no class of the package has them)
+    namespace I = CGAL::DGG_VTP_3::internal;
+    I::Unfolded_mesh<double> mesh;
+    std::optional<I::Patch_partition<double>> partition;
+    dggvtp::with_threads(threads, [&](auto tag) {
+      I::unfold_triangle_soup<decltype(tag)>(soup.points, soup.triangles, CGAL::Identity_property_map<Kernel::Point_3>(),
+                                             Kernel(), mesh);
+      partition.emplace(mesh, tag);
+    });
     std::vector<std::uint32_t> all(n);
     for(std::size_t v = 0; v < n; ++v)
       all[v] = std::uint32_t(v);
@@ -99,8 +109,8 @@ int main(int argc, char** argv)
     std::vector<std::size_t> windows(n);
     auto t0 = std::chrono::steady_clock::now();
     dggvtp::with_threads(threads, [&](auto tag) {
-      core.template direct_runs<decltype(tag)>(all, 0. + epsilon, [&](std::size_t k, const auto& reached,
-                                                                        const auto& w, const auto& statistics) {
+      I::geodesic_graph_build_runs<decltype(tag)>(mesh, *partition, all, 0. + epsilon, [&](std::size_t k, const auto& reached,
+                                                                                         const auto& w, const auto& statistics) {
         Row& r = rows[k];
         for(const auto v : reached)
           if(v != all[k] && w[v] < std::numeric_limits<double>::infinity())

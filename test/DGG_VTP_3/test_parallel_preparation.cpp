@@ -38,14 +38,6 @@ using Soup_solver = CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Epic
 template <class T>
 bool same_bits(const T& a, const T& b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }
 
-std::vector<Epick::Point_3> epick_points(const Soup& soup)
-{
-  std::vector<Epick::Point_3> points;
-  for(const auto& p : soup.points)
-    points.emplace_back(p[0], p[1], p[2]);
-  return points;
-}
-
 // The meshes of the checks: bunny (75k faces: several blocks of the faces' radix sort), a border
 // (lion_head), and a jittered grid of 80k faces with a second grid pinched to one of its corners
 // (a vertex of two fans).

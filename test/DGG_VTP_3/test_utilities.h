@@ -142,6 +142,15 @@ struct Soup
   std::vector<std::vector<std::size_t>> faces;
 };
 
+// the points of `soup` as Epick's
+inline std::vector<Epick::Point_3> epick_points(const Soup& soup)
+{
+  std::vector<Epick::Point_3> points;
+  for(const auto& p : soup.points)
+    points.emplace_back(p[0], p[1], p[2]);
+  return points;
+}
+
 // deterministic on every platform (std distributions are not)
 class Random
 {

@@ -462,7 +462,6 @@ public:
 
 private:
   friend class Shortest_path_tree<Geodesic_distance_solver>;
-  friend struct internal::Core_of_solver;
   using Numbering = internal::Mesh_numbering<TriangleMesh, Vertex_index_map, Face_index_map>;
   using Core = internal::Solver_core<Numbering, FT>;
 

@@ -203,7 +203,6 @@ public:
 
 private:
   friend class Shortest_path_tree<Triangle_soup_geodesic_distance_solver>;
-  friend struct internal::Core_of_solver;
   using Core = internal::Solver_core<internal::Index_numbering, FT>;
 
   template <class PointRange, class TriangleRange, class NamedParameters>

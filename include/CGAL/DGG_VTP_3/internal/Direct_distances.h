@@ -25,46 +25,41 @@ namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
 
-// What a direct-only run (Propagation_query::direct_only) keeps per vertex beside its distance: the
-// least length w of a straight path from the run's source x that reached it, a window of x's or an
-// edge of x's corners (+infinity: none). The vertices with a w are the out-edges of x in the
-// certified geodesic graph, and they alone send windows out besides x, with key w / rho: whatever
-// cuts one of x's windows is then a vertex c with an edge x -> c of weight w and a path from c.
-// Their distance, the least of every path, may be shorter (through another such vertex), and is
-// not what they emit with. The run is done once none of x's windows is left. Empty outside
-// direct-only runs, which run on one thread (see Solver_core::direct_runs).
+// The certified geodesic graph's build rule (see benchmark/DGG_VTP_3/README.md, Table 14, for the
+// rule, its theorem and the experiment): a direct-only run, a propagation from one vertex x
+// (Window_propagation with `direct_only`), keeps per vertex beside its distance the least length w
+// of a straight path from x that reached it, a window of x's or an edge of x's corners
+// (+infinity: none). The vertices with a w are the out-edges of x in the graph, and they alone
+// send windows out besides x, with key w / rho: whatever cuts one of x's windows is then a vertex c
+// with an edge x -> c of weight w and a path from c. Their distance, the least of every path, may
+// be shorter (through another such vertex), and is not what they emit with. The run is done once
+// none of x's windows is left. Such runs are sequential (see Geodesic_graph_build.h).
 template <class FT>
 class Direct_distances
 {
 public:
   using Index = std::uint32_t;
 
-  static Index none() { return Index(-1); }
-
-  // for a run from `root` (none(): not a direct-only run) on `n` vertices, after one that
-  // reached `reached` (every vertex given a w was reached)
+  // for a run from `root` on `n` vertices, after one that reached `reached` (every vertex given a w
+  // was reached)
   void reset(const std::vector<Index>& reached, Index root, std::size_t n)
   {
-    if(!m_w.empty())
+    if(m_w.empty())
+      m_w.assign(n, Number_type_math<FT>::infinity());
+    else
       for(Index v : reached)
         m_w[v] = Number_type_math<FT>::infinity();
     m_root = root;
     m_live = 0;
     m_started = false;
-    if(root != none() && m_w.empty())
-      m_w.assign(n, Number_type_math<FT>::infinity());
-    if(root != none())
-      m_w[root] = number<FT>(0);
+    m_w[root] = number<FT>(0);
   }
-
-  bool active() const { return m_root != none(); }
-  Index root() const { return m_root; }
 
   // A path of length `d` from pseudo-source `from` reaches `v`; returns whether it gives v its
   // first w (then v must emit).
   bool reach(Index v, FT d, Index from)
   {
-    if(from != m_root || m_root == none() || !(d < m_w[v]))
+    if(from != m_root || !(d < m_w[v]))
       return false;
     const bool first = m_w[v] == Number_type_math<FT>::infinity();
     m_w[v] = d;
@@ -74,28 +69,25 @@ public:
   // a window is stored in a list, or taken from one to be propagated (some of its children are stored)
   void stored(const Window<FT>& w)
   {
-    if(w.origin == m_root && m_root != none())
+    if(w.origin == m_root)
     {
       ++m_live;
       m_started = true;
     }
   }
-  // (nothing is written outside a direct-only run: the patches of a parallel one call them at once)
   void taken(const std::vector<Window<FT>>& windows)
   {
-    if(m_root == none())
-      return;
     for(const Window<FT>& w : windows)
       if(w.origin == m_root)
         --m_live;
   }
-  bool done() const { return m_root != none() && m_started && m_live == 0; }
+  bool done() const { return m_started && m_live == 0; }
 
   // Whether a window may stop at its distance bound: one of x's if its relays are out-edges no
   // longer than its straight paths to them (the beam is left to them), any other always.
   bool may_stop(const Window<FT>& w) const
   {
-    return m_root == none() || w.origin != m_root ||
+    return w.origin != m_root ||
            ((!(w.relay_left > FT(0)) || m_w[w.relay_left_vertex] <= w.relay_left) &&
             (!(w.relay_right > FT(0)) || m_w[w.relay_right_vertex] <= w.relay_right));
   }
@@ -105,7 +97,7 @@ public:
   const std::vector<FT>& all() const { return m_w; }
 
 private:
-  Index m_root = none();
+  Index m_root = 0;
   std::vector<FT> m_w;       // per vertex
   std::size_t m_live = 0;    // x's windows in the lists
   bool m_started = false;    // x has emitted

@@ -35,7 +35,7 @@ class Key_ratio
 public:
   // Whether windows stop: where they gain; never, where stops would break the propagation's
   // argument (see Propagation_vertices::keep_field); always, where the windows must end without
-  // relays that emit (see Propagation_query::direct_only).
+  // relays that emit (see Direct_distances).
   enum class Stops { where_they_pay, never, always };
 
   Key_ratio(FT accuracy, std::size_t number_of_vertices, Stops stops = Stops::where_they_pay)

@@ -55,11 +55,6 @@ struct Propagation_query
   // to `prior`, or if none to the field of the propagation's last run
   bool add_to_field = false;
   const Prior_field<FT>* prior = nullptr;
-  // The run of the certified geodesic graph's build rule (the manual's section of that name), at
-  // an accuracy > 0, from one vertex source x, on one thread: the vertices that x's windows reach
-  // are x's out-edges, and they alone emit besides x, with discounted keys (see Direct_distances);
-  // windows stop at their distance bound where it pays or not.
-  bool direct_only = false;
   // the user's `callback`: given the fraction of vertices popped, false cancels (empty: none)
   std::function<bool(double)> progress;
 };

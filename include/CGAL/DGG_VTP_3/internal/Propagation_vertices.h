@@ -30,6 +30,7 @@
 #include <CGAL/assertions.h>
 
 #include <algorithm>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -41,7 +42,9 @@ namespace internal {
 // query asks to record of the paths (their pseudo-sources, where they arrive from). Kept from one
 // propagation to the next on the same mesh: reset() puts back what the last one changed, the
 // vertices it reached (every change is to a vertex once it has a distance).
-template <class FT>
+// `direct_only`: the propagation is the certified geodesic graph's build rule (see
+// Direct_distances); ordinary queries never instantiate it.
+template <class FT, bool direct_only = false>
 class Propagation_vertices
 {
   using Mesh = Unfolded_mesh<FT>;
@@ -88,11 +91,12 @@ public:
       if(!m_arrival.empty())
         m_arrival[v] = no_arrival();
     }
-    direct.reset(m_reached, query.direct_only ? query.vertex_sources.at(0) : no_origin(), distance.size());
+    if constexpr(direct_only)
+      direct.reset(m_reached, query.vertex_sources.at(0), distance.size());
     m_reached.clear();
     m_reached_by_patch.clear();
     m_keys = keys;
-    pseudo_sources.reset(query.direct_only ? Emitters::direct_only : keys.is_exact() ? Emitters::exact : Emitters::dgg);
+    pseudo_sources.reset(direct_only ? Emitters::direct_only : keys.is_exact() ? Emitters::exact : Emitters::dgg);
     if(origins && m_origin.empty())
       m_origin.assign(distance.size(), no_origin());
     if(arrivals && m_arrival.empty())
@@ -105,8 +109,8 @@ public:
   void start(const Key_ratio<FT>& keys, const Propagation_query<FT>& query)
   {
     CGAL_precondition(!query.add_to_field || query.record_origins);
-    CGAL_precondition(!query.direct_only || (!query.add_to_field && !keys.is_exact() && query.vertex_sources.size() == 1 &&
-                                           query.point_sources.empty()));
+    CGAL_precondition(!direct_only || (!query.add_to_field && !keys.is_exact() && query.vertex_sources.size() == 1 &&
+                                       query.point_sources.empty()));
     if(!query.add_to_field || query.prior != nullptr)
       reset(keys, query);
     if(query.prior != nullptr)
@@ -206,10 +210,15 @@ public:
   // In a direct-only run, a vertex given its first w (see Direct_distances) is queued too, to emit.
   bool relax(Index v, FT d, FT key, Index corner, const Point& direction, Index from)
   {
-    const bool first_w = direct.reach(v, d, from);
-    if(first_w)
-      pseudo_sources.make_emitter(v);
-    return relax_distance(v, d, key, corner, direction, from) || first_w;
+    if constexpr(direct_only)
+    {
+      const bool first_w = direct.reach(v, d, from);
+      if(first_w)
+        pseudo_sources.make_emitter(v);
+      return relax_distance(v, d, key, corner, direction, from) || first_w;
+    }
+    else
+      return relax_distance(v, d, key, corner, direction, from);
   }
 
   // The key of vertex `v` at distance `d`, as the ICH rule compares it: that of its windows (d /
@@ -223,7 +232,7 @@ public:
   // Direct_distances), both of the form w(x, c) / rho + a path from c, c an out-edge.
   FT key(Index v, FT d, bool own) const
   {
-    if(direct.active())
+    if constexpr(direct_only)
       return (std::min)(least_key[v], m_keys.key(direct[v]));
     if(own ? is_source[v] == prior : !m_in_field.empty() && m_in_field[v])
       return d;
@@ -232,7 +241,13 @@ public:
   }
 
   // the distance `v` sends its windows out with, when it emits
-  FT emission_distance(Index v) const { return direct.active() ? direct[v] : distance[v]; }
+  FT emission_distance(Index v) const
+  {
+    if constexpr(direct_only)
+      return direct[v];
+    else
+      return distance[v];
+  }
 
 private:
   static Arrival no_arrival() { return Arrival{Mesh::no_halfedge, Point{number<FT>(0), number<FT>(0)}}; }
@@ -302,7 +317,9 @@ public:
   std::vector<char> is_source;
   static constexpr char prior = 2;
   Pseudo_source_states<FT> pseudo_sources;        // DGG-VTP's vertices that emit all around
-  Direct_distances<FT> direct;                    // in a direct-only run, the source's out-edges
+  struct No_direct_distances {};
+  // in a direct-only run, the source's out-edges
+  std::conditional_t<direct_only, Direct_distances<FT>, No_direct_distances> direct;
 };
 
 } // namespace internal

@@ -35,7 +35,7 @@ namespace internal {
 // distance / rho as key (see Window), and again whenever its distance drops. The others, as in
 // the exact algorithm, leave the paths through them to the windows that pass beside them. When
 // epsilon is small few windows stop, and DGG-VTP then costs about what the exact algorithm does.
-// In a direct-only run (Propagation_query::direct_only) the vertices with a straight path from the
+// In a direct-only run (Direct_distances) the vertices with a straight path from the
 // source emit, and only they (see Direct_distances).
 template <class FT>
 class Pseudo_source_states

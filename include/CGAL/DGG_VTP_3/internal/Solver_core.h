@@ -54,14 +54,6 @@ namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
 
-// What the package's classes made from a solver reach of it: its Solver_core (the solvers
-// befriend it).
-struct Core_of_solver
-{
-  template <class Solver>
-  static const auto& core(const Solver& solver) { return *solver.m_core; }
-};
-
 // What Geodesic_distance_solver and Triangle_soup_geodesic_distance_solver share, all of it: the
 // prepared mesh and every query, from the user's sources and named parameters to the user's
 // outputs. The solvers differ only by how their user names vertices and faces (`Numbering`, see
@@ -281,26 +273,6 @@ public:
       },
       np);
     return statistics;
-  }
-
-  // One direct-only propagation (Propagation_query::direct_only) from each of `vertices`, each on
-  // one thread: `out(k, reached, w, statistics)` as the k-th is done, `w` per vertex the weight of
-  // its edge from vertices[k] in the certified geodesic graph (+infinity: no edge; 0 at vertices[k]),
-  // finite only among `reached`, the numbers of the vertices the run reached.
-  template <class ConcurrencyTag, class Out>
-  void direct_runs(const std::vector<Index>& vertices, Computation_FT accuracy, const Out& out) const
-  {
-    CGAL_precondition(accuracy > Computation_FT(0));
-    CGAL::for_each<Effective_tag<ConcurrencyTag>>(boost::irange(std::size_t(0), vertices.size()), [&](std::size_t k) {
-      Query query;
-      query.vertex_sources.assign(1, vertices[k]);
-      query.source_numbers.assign(1, 0);
-      query.direct_only = true;
-      const auto lease = propagation();
-      lease->template run<Sequential_tag>(query, accuracy);
-      out(k, lease->reached(), lease->direct_distances(), lease->statistics());
-      return true;
-    });
   }
 
   // the propagation of compute_shortest_path_tree(), handed with its query and the places of its

@@ -62,8 +62,10 @@ namespace internal {
 // relay vertices of the windows it stops as pseudo-sources (see Pseudo_source_states).
 // It runs on one patch of faces at a time (Patch_partition), in rounds that a Round_scheduler
 // drives; what it does to another patch's part of the mesh goes through the scheduler's hand_off().
-// A direct-only run (the certified graph's build rule) changes who emits: see Direct_distances.
-template <class FT>
+// `direct_only`: the run is the certified geodesic graph's build rule, which changes who emits and
+// when the run ends (see Direct_distances, Geodesic_graph_build.h); ordinary queries never
+// instantiate it, and none of it is on their path.
+template <class FT, bool direct_only = false>
 class Window_propagation
 {
   using Mesh = Unfolded_mesh<FT>;
@@ -141,7 +143,8 @@ public:
   const Point_targets<FT>& point_targets() const { return m_targets; } // how their paths arrive
 
   const std::vector<FT>& distances() const { return m_vertices.distance; }
-  const std::vector<FT>& direct_distances() const { return m_vertices.direct.all(); } // see Direct_distances
+  // in a direct-only run, per vertex the weight of its edge from the source (see Direct_distances)
+  const std::vector<FT>& direct_distances() const { return m_vertices.direct.all(); }
   // per vertex, a lower bound of its exact distance (see Propagation_vertices::finish)
   const std::vector<FT>& lower_bounds() const { return m_vertices.least_key; }
   // the vertices the run gave a distance (+infinity beyond max_distance); the others are as before
@@ -156,8 +159,8 @@ private:
   void reset(const Propagation_query<FT>& query, FT accuracy)
   {
     m_reusable = false;
-    m_keys = Key_ratio<FT>(accuracy, m_mesh.number_of_vertices(), // see keep_field() and Propagation_query::direct_only
-                           query.add_to_field ? Stops::never : query.direct_only ? Stops::always : Stops::where_they_pay);
+    m_keys = Key_ratio<FT>(accuracy, m_mesh.number_of_vertices(), // see keep_field() and Direct_distances
+                           query.add_to_field ? Stops::never : direct_only ? Stops::always : Stops::where_they_pay);
     m_emission.set_keys(m_keys);
     for(Index k : m_scheduler.woken())
       m_patches[k].clear(m_scheduled);
@@ -189,7 +192,7 @@ private:
   bool query_is_answered(FT nearest)
   {
     m_limit = early_termination_limit(*m_query, m_targets, m_mesh, m_vertices.distance);
-    const bool answered = m_vertices.direct.done() || nothing_pending_below(m_limit, nearest, m_keys, m_patches, m_scheduler.woken());
+    const bool answered = direct_run_done() || nothing_pending_below(m_limit, nearest, m_keys, m_patches, m_scheduler.woken());
     m_pending_keys = answered ? least_key_left(m_limit, m_keys) : infinity();
     return answered;
   }
@@ -202,7 +205,7 @@ private:
   {
     Patch& p = m_patches[k];
     propagate_scheduled_lists(p);
-    while(!p.queue.empty() && p.queue.top().first <= limit && !m_vertices.direct.done())
+    while(!p.queue.empty() && p.queue.top().first <= limit && !direct_run_done())
     {
       const Queue_entry top = p.queue.top();
       p.queue.pop();
@@ -337,7 +340,8 @@ private:
     if(m_scheduler.template hand_off<typename Scheduler::Window_message>(p.id, m_partition.patch_of_halfedge(h), h, w))
       return;
     p.lists.push(h - p.first_halfedge, w);
-    m_vertices.direct.stored(w);
+    if constexpr(direct_only)
+      m_vertices.direct.stored(w);
     if(m_in_region.contains(Mesh::face(h)))
       schedule(p, h);
   }
@@ -360,7 +364,8 @@ private:
   {
     refuse_windows_beyond(m_window_limit, p.lists.created());
     p.lists.take(h - p.first_halfedge, p.buffer);
-    m_vertices.direct.taken(p.buffer);
+    if constexpr(direct_only)
+      m_vertices.direct.taken(p.buffer);
     const Index apex_vertex = m_mesh.source(Mesh::prev(h));
     const Point c = m_mesh.apex(h);
 
@@ -370,7 +375,7 @@ private:
     std::size_t kept = 0;
     for(Win& w : p.buffer)
     {
-      if(w.beyond_bound(distance_to_interval(w.source, w.b0, w.b1)) && m_vertices.direct.may_stop(w))
+      if(w.beyond_bound(distance_to_interval(w.source, w.b0, w.b1)) && may_stop(w))
         stop_at_bound(p, w);
       else if(trim_by_end_vertices(w, len, ends.a, ends.b))
         p.buffer[kept++] = w;
@@ -466,10 +471,26 @@ private:
   // vertex `v` emits all around when popped next (again, if it was); not in a direct-only run (Direct_distances)
   void make_emitter(Patch& p, Index v)
   {
-    if(!m_vertices.direct.active() &&
-       !m_scheduler.template hand_off<typename Scheduler::Relay_message>(p.id, m_partition.owner(v), v) &&
-       m_vertices.pseudo_sources.make_emitter(v))
-      p.queue.push(Queue_entry(m_vertices.distance[v], v));
+    if constexpr(!direct_only)
+      if(!m_scheduler.template hand_off<typename Scheduler::Relay_message>(p.id, m_partition.owner(v), v) &&
+         m_vertices.pseudo_sources.make_emitter(v))
+        p.queue.push(Queue_entry(m_vertices.distance[v], v));
+  }
+
+  // the build rule's own ending and stops (see Direct_distances)
+  bool direct_run_done() const
+  {
+    if constexpr(direct_only)
+      return m_vertices.direct.done();
+    else
+      return false;
+  }
+  bool may_stop(const Win& w) const
+  {
+    if constexpr(direct_only)
+      return m_vertices.direct.may_stop(w);
+    else
+      return true;
   }
 
   bool is_dgg() const { return !m_keys.is_exact(); }
@@ -479,7 +500,7 @@ private:
   Scheduler m_scheduler;
   Key_ratio<FT> m_keys;               // rho = 1 + epsilon (1: exact) and its constants
   Pseudo_source_emission<FT> m_emission; // what pseudo-sources send out, and where
-  Propagation_vertices<FT> m_vertices; // per vertex: distance, arrivals, (pseudo-)source
+  Propagation_vertices<FT, direct_only> m_vertices; // per vertex: distance, arrivals, (pseudo-)source
   Index_set m_in_region;              // the faces inside the propagation region R
   std::vector<char> m_scheduled;      // per halfedge: its window list is in its patch's FIFO
   const std::size_t m_window_limit;   // see window_limit()
