@@ -63,9 +63,10 @@ struct Propagation_patch
   std::vector<Index> unscheduled_lists(const std::vector<char>& scheduled) const
   {
     std::vector<Index> out;
-    for(Index i : lists.used())
+    lists.for_each_used([&](Index i) {
       if(!lists.empty(i) && !scheduled[first_halfedge + i])
         out.push_back(first_halfedge + i);
+    });
     std::sort(out.begin(), out.end());
     return out;
   }

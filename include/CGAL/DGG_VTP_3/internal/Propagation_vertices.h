@@ -70,7 +70,6 @@ public:
     , m_reached_by_patch(mesh.number_of_vertices(), partition.size())
     , distance(mesh.number_of_vertices(), Number_type_math<FT>::infinity())
     , least_key(mesh.number_of_vertices(), Number_type_math<FT>::infinity())
-    , incoming(mesh.number_of_vertices())
     , is_source(mesh.number_of_vertices(), 0)
     , pseudo_sources(mesh, partition)
   {}
@@ -84,7 +83,8 @@ public:
     for(Index v : m_reached)
     {
       distance[v] = least_key[v] = Number_type_math<FT>::infinity();
-      incoming[v] = Incoming_directions<FT>();
+      if(!incoming.empty())
+        incoming[v] = Incoming_directions<FT>();
       is_source[v] = 0;
       if(!m_origin.empty())
         m_origin[v] = no_origin();
@@ -97,6 +97,8 @@ public:
     m_reached_by_patch.clear();
     m_keys = keys;
     pseudo_sources.reset(direct_only ? Emitters::direct_only : keys.is_exact() ? Emitters::exact : Emitters::dgg);
+    if(keys.is_exact() && incoming.empty()) // the exact mode's shadows only
+      incoming.assign(distance.size(), Incoming_directions<FT>());
     if(origins && m_origin.empty())
       m_origin.assign(distance.size(), no_origin());
     if(arrivals && m_arrival.empty())
@@ -167,7 +169,8 @@ public:
     {
       is_source[v] = prior;
       m_in_field[v] = 1;
-      incoming[v] = Incoming_directions<FT>{-Number_type_math<FT>::infinity(), Number_type_math<FT>::infinity()};
+      if(!incoming.empty())
+        incoming[v] = Incoming_directions<FT>{-Number_type_math<FT>::infinity(), Number_type_math<FT>::infinity()};
     }
     m_reached.clear();
     m_reached_by_patch.clear();
@@ -256,11 +259,13 @@ private:
   {
     least_key[v] = (std::min)(least_key[v], key);
     const FT dv = distance[v];
-    Incoming_directions<FT>& in = incoming[v];
     const bool shorter = d < dv - T::rounding_margin(dv) || dv == Number_type_math<FT>::infinity();
-    if(corner == Mesh::no_halfedge && !shorter)
+    // DGG-VTP's pseudo-sources emit all around: the directions of arrival matter to the exact
+    // mode's shadows only, and a tie keeps the value it has (see the manual's ties)
+    const bool directions = m_keys.is_exact() && corner != Mesh::no_halfedge;
+    if(!shorter && !directions)
       return false;
-    const FT back = corner == Mesh::no_halfedge ? number<FT>(0) : direction_position(m_mesh, corner, direction);
+    const FT back = directions ? direction_position(m_mesh, corner, direction) : number<FT>(0);
     if(shorter)
     {
       m_reached_by_patch.insert(v, m_partition.owner(v));
@@ -268,13 +273,15 @@ private:
         is_source[v] = 0;
       distance[v] = d;
       pseudo_sources.distance_dropped(v);
-      in.low = in.high = back;
+      if(directions)
+        incoming[v].low = incoming[v].high = back;
       if(m_record_origins)
         m_origin[v] = from;
       if(m_record_arrivals)
         m_arrival[v] = Arrival{corner, direction};
       return true;
     }
+    Incoming_directions<FT>& in = incoming[v];
     if(d <= dv + T::rounding_margin(dv) && !(in.low <= back && back <= in.high))
     {
       in.low = (std::min)(in.low, back);
@@ -312,7 +319,8 @@ public:
   // manual's K(v)), equal to `distance` where the path of the least key is the true
   // source's straight one.
   std::vector<FT> least_key;
-  std::vector<Incoming_directions<FT>> incoming;  // arrival directions of its best paths
+  // arrival directions of its best paths, per vertex in the exact mode (empty until one runs)
+  std::vector<Incoming_directions<FT>> incoming;
   // 1: one of the sources (they emit all around); `prior`: its distance is the prior field's
   std::vector<char> is_source;
   static constexpr char prior = 2;

@@ -78,13 +78,20 @@ public:
   // for the next propagation
   void set_keys(const Key_ratio<FT>& keys) { m_keys = keys; }
 
-  // lines 3-7: vertex `v` at distance `dv` lights all its corners
+  // lines 3-7: vertex `v` at distance `dv` lights all its corners. Each neighbour is the end of two
+  // corners' edges, and DGG-VTP relaxes it from the first (that corner's target): the second would
+  // give the same distance, which only the exact mode's shadows tell from it by its direction.
+  // The neighbours are all relaxed before the windows leave, so that the ICH rule trims each window
+  // against both ends of its edge.
   template <class Out>
   void all_around(Index v, FT dv, Out& out) const
   {
     out.count_pseudo_source();
+    const bool each_neighbour_once = !m_keys.is_exact();
     for(const Index* c = m_mesh.corners_begin(v); c != m_mesh.corners_end(v); ++c)
-      across_corner(v, dv, *c, out);
+      relax_ends(v, dv, *c, out, !each_neighbour_once || m_mesh.opposite(Mesh::prev(*c)) == Mesh::no_halfedge);
+    for(const Index* c = m_mesh.corners_begin(v); c != m_mesh.corners_end(v); ++c)
+      window_across(v, dv, *c, out);
   }
 
   // a vertex at distance `dv` and least key `key`: its copies (see Vertex_copies.h) are the same
@@ -124,7 +131,11 @@ public:
     out.count_pseudo_source();
     // a corner that both ends meet is lit once
     for(std::int64_t r = from_rank; r <= (std::min)(to_rank, from_rank + k - 1); ++r)
-      across_corner(v, dv, m_mesh.corner_of_rank(v, Index(((r % k) + k) % k)), out);
+    {
+      const Index h = m_mesh.corner_of_rank(v, Index(((r % k) + k) % k));
+      relax_ends(v, dv, h, out, true);
+      window_across(v, dv, h, out);
+    }
   }
 
   // Lines 2-7 for a source inside a face (or on an edge, then in all its faces): it reaches the
@@ -144,18 +155,26 @@ public:
   }
 
 private:
-  // a full-edge window on the edge opposite `v` in the face of corner `h`, and the distances of
-  // the corner's two other vertices along its edges
+  // the distances of the other two vertices of the face of corner `h` at `v` (at distance `dv`),
+  // along the corner's edges: of its target, and of the source of its last edge if `both_ends`
   template <class Out>
-  void across_corner(Index v, FT dv, Index h, Out& out) const
+  void relax_ends(Index v, FT dv, Index h, Out& out, bool both_ends) const
   {
     const Index across = Mesh::next(h);
     const Index prev = Mesh::prev(h);
     // from target(h) back along its corner's last edge, from source(prev) back along prev
     const FT key = m_keys.key(dv);
     out.relax(m_mesh.target(h), dv + m_mesh.length(h), key + m_mesh.length(h), across, m_mesh.apex(across), v);
-    out.relax(m_mesh.source(prev), dv + m_mesh.length(prev), key + m_mesh.length(prev), prev,
-              Point{number<FT>(1), number<FT>(0)}, v);
+    if(both_ends)
+      out.relax(m_mesh.source(prev), dv + m_mesh.length(prev), key + m_mesh.length(prev), prev,
+                Point{number<FT>(1), number<FT>(0)}, v);
+  }
+
+  // a full-edge window from `v` on the edge opposite it in the face of corner `h`
+  template <class Out>
+  void window_across(Index v, FT dv, Index h, Out& out) const
+  {
+    const Index across = Mesh::next(h);
     if(m_mesh.has_face_across(across))
       for_each_face_across(m_mesh, across, window_across_corner(m_mesh, h, dv, m_keys, v),
                            [&out](Index t, const Window<FT>& w) { out.add_window(t, w); });

@@ -67,37 +67,51 @@ public:
   }
 
   // `v` emits all around, or will
-  bool emits(Index v) const { return state(v) != not_emitting; }
-
-  // `v` is popped: whether it emits now (and then it has)
-  bool emit_at_pop(Index v)
+  bool emits(Index v) const
   {
-    if(state(v) != to_emit)
-      return false;
-    set(v, emitted);
-    return true;
+    const State s = state(v);
+    return s == to_emit || s == emitted;
+  }
+
+  // `v` is popped at its distance: whether it emits now (and then it has); one that does not is
+  // passed at that distance
+  bool pop(Index v)
+  {
+    const State s = state(v);
+    if(s == to_emit)
+    {
+      set(v, emitted);
+      return true;
+    }
+    if(s == not_emitting)
+      set(v, passed);
+    return false;
   }
 
   // a shorter path reached `v`: it emits again when popped (not in a direct-only run: it emits
-  // with the length of its straight path, not with its distance)
+  // with the length of its straight path, not with its distance), and is popped again in any case
   void distance_dropped(Index v)
   {
     if(m_state[v] == emitted && m_mode != Mode::direct_only)
       m_state[v] = to_emit;
+    else if(m_state[v] == passed)
+      m_state[v] = not_emitting;
   }
 
-  // `v` becomes a pseudo-source: returns true if it was not one, and then it must be popped
-  // (again) to emit
+  // `v`, which has a distance, becomes a pseudo-source: returns true if it must be queued again to
+  // emit, having been popped at its distance already; one not yet popped emits when it is (a
+  // vertex is queued when it gets a distance)
   bool make_emitter(Index v)
   {
-    if(state(v) != not_emitting)
+    const State s = state(v);
+    if(s != not_emitting && s != passed)
       return false;
     set(v, to_emit);
-    return true;
+    return s == passed;
   }
 
 private:
-  enum State : char { as_meshed, not_emitting, to_emit, emitted };
+  enum State : char { as_meshed, not_emitting, passed, to_emit, emitted };
 
   State state(Index v) const
   {

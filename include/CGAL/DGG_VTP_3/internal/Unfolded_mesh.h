@@ -95,8 +95,13 @@ public:
   // non-manifold
   const Index* corners_begin(Index v) const { return m_vertex_corners.data() + m_vertex_corners_begin[v]; }
   const Index* corners_end(Index v) const { return m_vertex_corners.data() + m_vertex_corners_begin[v + 1]; }
-  // the position of corner `h` among its vertex's corners, and the corner at a position
-  Index corner_rank(Index h) const { return m_corner_rank[h]; }
+  // the position of corner `h` among its vertex's corners (a search among a few: the exact mode's
+  // shadows alone ask, and an array of them would cost 4 bytes a halfedge), and the corner at a position
+  Index corner_rank(Index h) const
+  {
+    const Index* first = corners_begin(source(h));
+    return Index(std::find(first, corners_end(source(h)), h) - first);
+  }
   Index corner_of_rank(Index v, Index rank) const { return corners_begin(v)[rank]; }
 
   // the corner after `h` in turning order at source(h): its first edge is the last edge of `h`'s
@@ -135,7 +140,6 @@ private:
   std::vector<FT> m_corner_dot;             // 3F in exact types (else empty): ab . ac at each corner
   std::vector<Index> m_vertex_corners_begin;// V+1: CSR offsets into m_vertex_corners
   Uninitialized_vector<Index> m_vertex_corners; // 3F: corners grouped by vertex, in turning order
-  Uninitialized_vector<Index> m_corner_rank; // 3F: position of each corner among its vertex's
   std::vector<char> m_singular;             // V: border or non-manifold vertex
   std::vector<char> m_exact_pseudo_source;  // V: pseudo-source of the exact (VTP) propagation
   std::size_t m_non_manifold_vertices = 0;
@@ -314,7 +318,6 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, Uninitialized_v
   // Put the corners of each vertex in turning order (corner h, then the corner across the edge
   // prev(h)), starting after the border if there is one, and sum the angles of each closed fan.
   // A vertex whose corners are not one fan (several umbrellas meet there) is singular.
-  out.m_corner_rank.resize(3 * nf); // every corner's vertex writes it
   std::vector<Angle_sum<FT>> angle_sum(nv);
   // Each vertex at its first corner (the smallest, marked before the loop puts any in turning
   // order), so in the faces' spatial order: its corners' faces are then near each other in memory.
@@ -358,8 +361,6 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, Uninitialized_v
         out.m_singular[v] = 1;
         ++pinched;
       }
-      for(Index* c = first; c != last; ++c)
-        out.m_corner_rank[*c] = Index(c - first);
     }
     non_manifold += pinched; // a count: the same whatever the order of the blocks
   });

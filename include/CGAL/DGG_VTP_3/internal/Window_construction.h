@@ -36,7 +36,7 @@ namespace internal {
 // (the caller checks that there is one). Where windows stop (`keys.stops()`) its CH-relay
 // vertices are the ends of the edge (paper, Algorithm 1, line 3), at distances `relay_left` (from
 // the target of `e`, the start of the neighbouring halfedge) and `relay_right`, and its distance
-// bound follows from them; elsewhere it has neither, as take_relay() gives none.
+// bound follows from them (with_bound()); elsewhere it has neither, as take_relay() gives none.
 template <class FT>
 inline Window<FT> window_from_point(const Unfolded_mesh<FT>& mesh, typename Unfolded_mesh<FT>::Index e,
                                     const Vec2<FT>& p, FT sigma, FT relay_left, FT relay_right,
@@ -53,7 +53,9 @@ inline Window<FT> window_from_point(const Unfolded_mesh<FT>& mesh, typename Unfo
   w.relay_right = stops ? relay_right : number<FT>(0);
   w.relay_left_vertex = mesh.target(e);
   w.relay_right_vertex = mesh.source(e);
-  w.set_bound(distance_bound(w.source, w.b0, w.b1, w.relay_left, w.relay_right, keys));
+  // the bound waits for with_bound(), once the ICH rule has trimmed the window: most of a
+  // pseudo-source's windows die at once
+  w.d_max = stops ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
   w.origin = origin;
   return w;
 }

@@ -14,9 +14,9 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
-#include <CGAL/DGG_VTP_3/internal/Index_set.h>
 #include <CGAL/DGG_VTP_3/internal/Window.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -29,9 +29,10 @@ namespace internal {
 // threaded through one pool of windows with a free list: no allocation per window, and memory
 // proportional to the live wavefront, not to the number of windows ever created. The pool grows
 // by blocks that never move: a vector would double its capacity and copy itself, holding up to
-// three times the live windows at that moment. The lists a propagation used are remembered, so
-// that the next propagation on the same mesh starts from clean lists at a cost in proportion to
-// what this one touched, not to the mesh (see clear()).
+// three times the live windows at that moment. The lists a propagation used are remembered by
+// blocks of consecutive halfedges (a byte per block, not a number per list: a whole field uses
+// every list), so that the next propagation on the same mesh starts from clean lists at a cost in
+// proportion to what this one touched, not to the mesh (see clear()).
 template <class FT>
 class Window_lists
 {
@@ -40,7 +41,7 @@ public:
   static constexpr Index nil = Index(-1);
 
   explicit Window_lists(std::size_t number_of_halfedges)
-    : m_head(number_of_halfedges, nil), m_used(number_of_halfedges)
+    : m_head(number_of_halfedges, nil), m_block_used((number_of_halfedges >> block_of_lists_bits) + 1, 0)
   {}
 
   bool empty(Index h) const { return m_head[h] == nil; }
@@ -65,7 +66,11 @@ public:
       }
     }
     window(i) = w;
-    m_used.insert(h);
+    if(!m_block_used[h >> block_of_lists_bits])
+    {
+      m_block_used[h >> block_of_lists_bits] = 1;
+      m_used_blocks.push_back(h >> block_of_lists_bits);
+    }
     next(i) = m_head[h];
     m_head[h] = i;
     ++m_created;
@@ -94,23 +99,32 @@ public:
   template <class Predicate>
   bool all_windows(const Predicate& predicate) const
   {
-    for(Index h : m_used.members())
-      for(Index i = m_head[h]; i != nil; i = next(i))
-        if(!predicate(window(i)))
-          return false;
-    return true;
+    bool all = true;
+    for_each_used([&](Index h) {
+      for(Index i = m_head[h]; all && i != nil; i = next(i))
+        all = predicate(window(i));
+    });
+    return all;
   }
 
-  // the lists that held a window since clear(), empty or not, in the order they were first used
-  const std::vector<Index>& used() const { return m_used.members(); }
+  // `f(h)` for each list that may have held a window since clear(), empty or not (those of the
+  // blocks used), by blocks in the order they were first used
+  template <class F>
+  void for_each_used(const F& f) const
+  {
+    for(Index b : m_used_blocks)
+      for(Index h = b << block_of_lists_bits; h < (std::min)(std::size_t(b + 1) << block_of_lists_bits, m_head.size()); ++h)
+        f(h);
+  }
 
   // every list empty and every count 0, as when constructed, in the time of the lists used since
   // the last clear() (an early-terminated propagation leaves windows behind)
   void clear()
   {
-    for(Index h : m_used.members())
-      m_head[h] = nil;
-    m_used.clear();
+    for_each_used([this](Index h) { m_head[h] = nil; });
+    for(Index b : m_used_blocks)
+      m_block_used[b] = 0;
+    m_used_blocks.clear();
     m_free = nil;
     m_size = 0;
     m_live = m_peak = m_created = 0;
@@ -138,6 +152,7 @@ private:
   // 1024 slots per block: a propagation has a pool per patch (up to 256), each holding a partly
   // used block while the wavefront crosses it
   static constexpr int block_bits = 10;
+  static constexpr int block_of_lists_bits = 6; // 64 lists
   static constexpr Index block_mask = (Index(1) << block_bits) - 1;
   Window<FT>& window(Index i) { return m_window_blocks[i >> block_bits][i & block_mask]; }
   const Window<FT>& window(Index i) const { return m_window_blocks[i >> block_bits][i & block_mask]; }
@@ -145,7 +160,8 @@ private:
   Index next(Index i) const { return m_next_blocks[i >> block_bits][i & block_mask]; }
 
   std::vector<Index> m_head;      // per halfedge: first window of its list, or nil
-  Index_set m_used;               // the halfedges whose list held a window since clear()
+  std::vector<char> m_block_used; // per block of 64 halfedges: a list of it held a window since clear()
+  std::vector<Index> m_used_blocks; // those blocks, in the order they were first used
   std::vector<std::unique_ptr<Window<FT>[]>> m_window_blocks; // the pool: windows, live or free
   std::vector<std::unique_ptr<Index[]>> m_next_blocks; // per slot: next window of its list, or next free slot
   Index m_size = 0;               // slots ever used

@@ -214,7 +214,7 @@ private:
         continue; // superseded by a later, shorter distance
       ++p.stats.vertices_popped;
       Emission_out out{*this, p}; // lines 10-13: v as a pseudo-source
-      if(is_dgg() ? m_vertices.is_source[v] || m_vertices.pseudo_sources.emit_at_pop(v) : m_vertices.is_source[v] || m_mesh.is_singular(v))
+      if(is_dgg() ? m_vertices.pseudo_sources.pop(v) || m_vertices.is_source[v] : m_vertices.is_source[v] || m_mesh.is_singular(v))
         m_emission.all_around(v, m_vertices.emission_distance(v), out);
       else if(!is_dgg() && m_mesh.is_exact_pseudo_source(v))
         m_emission.in_shadow(v, m_vertices.distance[v], m_vertices.incoming[v], out);
