@@ -97,9 +97,10 @@ int main(int argc, char** argv)
     namespace I = CGAL::DGG_VTP_3::internal;
     I::Unfolded_mesh<double> mesh;
     std::optional<I::Patch_partition<double>> partition;
+    I::Unfolding_order order;
     dggvtp::with_threads(threads, [&](auto tag) {
-      I::unfold_triangle_soup<decltype(tag)>(soup.points, soup.triangles, CGAL::Identity_property_map<Kernel::Point_3>(),
-                                             Kernel(), mesh);
+      order = I::unfold_triangle_soup<decltype(tag)>(soup.points, soup.triangles,
+                                                     CGAL::Identity_property_map<Kernel::Point_3>(), Kernel(), mesh);
       partition.emplace(mesh, tag);
     });
     std::vector<std::uint32_t> all(n);
@@ -111,14 +112,14 @@ int main(int argc, char** argv)
     dggvtp::with_threads(threads, [&](auto tag) {
       I::geodesic_graph_build_runs<decltype(tag)>(mesh, *partition, all, 0. + epsilon, [&](std::size_t k, const auto& reached,
                                                                                          const auto& w, const auto& statistics) {
-        Row& r = rows[k];
+        Row& r = rows[order.vertices[k]]; // in the file's numbering
         for(const auto v : reached)
           if(v != all[k] && w[v] < std::numeric_limits<double>::infinity())
           {
-            r.columns.push_back(std::uint32_t(v));
+            r.columns.push_back(order.vertices[v]);
             r.values.push_back(w[v]);
           }
-        windows[k] = statistics.windows_created;
+        windows[order.vertices[k]] = statistics.windows_created;
       });
     });
     const double seconds_runs = seconds_since(t0);

@@ -34,8 +34,8 @@ Built build_graph(const Soup& soup, double epsilon)
 {
   namespace I = CGAL::DGG_VTP_3::internal;
   I::Unfolded_mesh<double> mesh;
-  I::unfold_triangle_soup<CGAL::Sequential_tag>(epick_points(soup), soup.faces,
-                                                 CGAL::Identity_property_map<Epick::Point_3>(), Epick(), mesh);
+  const I::Unfolding_order order = I::unfold_triangle_soup<CGAL::Sequential_tag>(
+    epick_points(soup), soup.faces, CGAL::Identity_property_map<Epick::Point_3>(), Epick(), mesh);
   const I::Patch_partition<double> partition(mesh, CGAL::Sequential_tag());
   const std::size_t n = mesh.number_of_vertices();
   std::vector<std::uint32_t> all(n);
@@ -46,10 +46,10 @@ Built build_graph(const Soup& soup, double epsilon)
   Built b;
   I::geodesic_graph_build_runs<CGAL::Sequential_tag>(
     mesh, partition, all, epsilon, [&](std::size_t k, const auto& reached, const auto& w, const auto&) {
-      for(const auto v : reached)
+      for(const auto v : reached) // in the soup's numbering
         if(v != all[k] && w[v] < std::numeric_limits<double>::infinity())
         {
-          edges.emplace_back(k, v);
+          edges.emplace_back(order.vertices[k], order.vertices[v]);
           weights.push_back(w[v]);
         }
     });

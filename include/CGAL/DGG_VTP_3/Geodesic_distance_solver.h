@@ -472,14 +472,14 @@ private:
     const Vertex_index_map vim = get_initialized_vertex_index_map(tm, np);
     const Face_index_map fim = get_initialized_face_index_map(tm, np);
     typename Core::Mesh mesh;
-    const std::vector<std::uint32_t> order = internal::unfold_triangle_mesh<Tag>(
+    internal::Unfolding_order order = internal::unfold_triangle_mesh<Tag>(
       tm,
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                    get_const_property_map(CGAL::vertex_point, tm)),
       vim, fim,
       parameters::choose_parameter<Traits>(parameters::get_parameter(np, internal_np::geom_traits)),
       mesh);
-    return std::make_shared<const Core>(Tag(), Numbering(tm, vim, fim), std::move(mesh), order);
+    return std::make_shared<const Core>(Tag(), Numbering(tm, vim, fim), std::move(mesh), std::move(order));
   }
 
   // the prepared mesh and the queries, on the numbers of the index maps; shared by the copies of

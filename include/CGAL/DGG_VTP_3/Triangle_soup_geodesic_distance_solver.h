@@ -214,7 +214,7 @@ private:
     const auto pm =
       parameters::choose_parameter<Identity_property_map<Point>>(parameters::get_parameter(np, internal_np::point_map));
     const auto gt = parameters::choose_parameter<GeomTraits>(parameters::get_parameter(np, internal_np::geom_traits));
-    const std::vector<std::uint32_t> order = internal::unfold_triangle_soup<Tag>(points, triangles, pm, gt, mesh);
+    internal::Unfolding_order order = internal::unfold_triangle_soup<Tag>(points, triangles, pm, gt, mesh);
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::copy_of_t>::value)
     {
       const auto at = [&](std::size_t i) {
@@ -223,11 +223,13 @@ private:
           gt.compute_x_3_object()(p), gt.compute_y_3_object()(p), gt.compute_z_3_object()(p)};
       };
       internal::link_copies(
-        internal::copy_groups(parameters::get_parameter(np, internal_np::copy_of_t()), mesh.number_of_vertices(), at),
+        internal::in_unfolded_order(
+          internal::copy_groups(parameters::get_parameter(np, internal_np::copy_of_t()), mesh.number_of_vertices(), at),
+          order),
         mesh);
     }
     return std::make_shared<const Core>(Tag(), internal::Index_numbering(mesh.number_of_vertices(), mesh.number_of_faces()),
-                                        std::move(mesh), order);
+                                        std::move(mesh), std::move(order));
   }
 
   // the prepared soup and the queries; shared by the copies of the solver and by the shortest

@@ -14,10 +14,15 @@
 
 #include <CGAL/license/DGG_VTP_3.h>
 
+#include <CGAL/DGG_VTP_3/internal/Unfolded_mesh.h>
+#include <CGAL/DGG_VTP_3/internal/for_each_block.h>
+
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <cstddef>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -25,8 +30,9 @@ namespace DGG_VTP_3 {
 namespace internal {
 
 // How a solver's user names its vertices and faces, and their numbers in Unfolded_mesh's input
-// (vertex i is the i-th vertex, face i the i-th face before the faces' reordering). What the two
-// solvers differ by: Solver_core does everything else with these numbers.
+// (vertex i is the i-th vertex, face i the i-th face before the unfolding's reordering). What the
+// two solvers differ by: Solver_core does everything else with these numbers, in the prepared
+// mesh's order (Unfolded_numbering).
 //
 //   vertex_index(v) the number of v, or number_of_vertices() if v is not a vertex of the input
 //   vertex(i)       the vertex of number i
@@ -93,6 +99,54 @@ public:
 
 private:
   std::size_t m_number_of_vertices, m_number_of_faces;
+};
+
+// A user's numbering (`Numbering`) in the order of the prepared mesh: element i here is the user's
+// element of number order.vertices[i] (order.faces[i]; see Unfolding_order). Solver_core works in
+// this numbering; the user's numbers remain for messages and for what goes back in them.
+template <class Numbering>
+class Unfolded_numbering
+{
+public:
+  using vertex_descriptor = typename Numbering::vertex_descriptor;
+  using face_descriptor = typename Numbering::face_descriptor;
+
+  template <class ConcurrencyTag>
+  Unfolded_numbering(Numbering user, Unfolding_order order, ConcurrencyTag)
+    : m_user(std::move(user)), m_order(std::move(order))
+    , m_vertex(m_order.vertices.size()), m_face(m_order.faces.size())
+  {
+    for_each_block<ConcurrencyTag>(m_vertex.size(), [&](std::size_t i0, std::size_t i1) {
+      for(std::size_t i = i0; i < i1; ++i)
+        m_vertex[m_order.vertices[i]] = std::uint32_t(i);
+    });
+    for_each_block<ConcurrencyTag>(m_face.size(), [&](std::size_t i0, std::size_t i1) {
+      for(std::size_t i = i0; i < i1; ++i)
+        m_face[m_order.faces[i]] = std::uint32_t(i);
+    });
+  }
+
+  std::size_t number_of_vertices() const { return m_vertex.size(); }
+  std::size_t number_of_faces() const { return m_face.size(); }
+  std::size_t vertex_index(vertex_descriptor v) const { return renumbered(m_user.vertex_index(v), m_vertex); }
+  std::size_t face_index(face_descriptor f) const { return renumbered(m_user.face_index(f), m_face); }
+  vertex_descriptor vertex(std::size_t i) const { return m_user.vertex(m_order.vertices[i]); }
+  face_descriptor face(std::size_t i) const { return m_user.face(m_order.faces[i]); }
+
+  // the user's number of vertex i, and the vertex of the user's number j
+  std::size_t user_number(std::size_t i) const { return m_order.vertices[i]; }
+  vertex_descriptor user_vertex(std::size_t j) const { return m_user.vertex(j); }
+
+private:
+  static std::size_t renumbered(std::size_t j, const std::vector<std::uint32_t>& to)
+  {
+    return j < to.size() ? std::size_t(to[j]) : to.size();
+  }
+
+  Numbering m_user;
+  Unfolding_order m_order;             // element of this numbering -> the user's number
+  std::vector<std::uint32_t> m_vertex; // the user's number -> vertex of this numbering
+  std::vector<std::uint32_t> m_face;   // likewise for faces
 };
 
 } // namespace internal

@@ -53,10 +53,8 @@ public:
     Surface_point<FT> point;
   };
 
-  // `internal_face`: the number of each face in `mesh`, by the face's number in `numbering`
-  Query_builder(const Numbering& numbering, const std::vector<Index>& internal_face, const UnfoldedMesh& mesh)
-    : m_numbering(numbering), m_internal_face(internal_face), m_mesh(mesh)
-  {}
+  // `numbering`: of the vertices and faces of `mesh` (see Unfolded_numbering)
+  Query_builder(const Numbering& numbering, const UnfoldedMesh& mesh) : m_numbering(numbering), m_mesh(mesh) {}
 
   Index vertex_index(vertex_descriptor v, const char* what) const
   {
@@ -148,7 +146,7 @@ private:
     }
     if(!(std::abs(sum - 1.) <= tolerance))
       throw std::invalid_argument(std::string("the barycentric coordinates of the ") + what + " must add up to 1");
-    Location l{false, 0, Surface_point<FT>{m_internal_face[i], {number<FT>(0), number<FT>(0), number<FT>(0)}}};
+    Location l{false, 0, Surface_point<FT>{Index(i), {number<FT>(0), number<FT>(0), number<FT>(0)}}};
     int zeros = 0, last_nonzero = 0;
     bool rescale = false;
     for(int k = 0; k < 3; ++k)
@@ -176,7 +174,6 @@ private:
   }
 
   const Numbering& m_numbering;
-  const std::vector<Index>& m_internal_face;
   const UnfoldedMesh& m_mesh;
 };
 

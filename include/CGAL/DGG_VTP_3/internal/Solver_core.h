@@ -17,6 +17,7 @@
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
 #include <CGAL/DGG_VTP_3/parameters.h>
 #include <CGAL/DGG_VTP_3/internal/Effective_concurrency_tag.h>
+#include <CGAL/DGG_VTP_3/internal/Element_numbering.h>
 #include <CGAL/DGG_VTP_3/internal/Farthest_point_sampling.h>
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Propagation_pool.h>
@@ -83,17 +84,11 @@ public:
     typename internal_np::Lookup_named_param_def<internal_np::concurrency_tag_t, NamedParameters, Sequential_tag>::type,
     Computation_FT>::type;
 
-  // `order`: new face i of `mesh` is the face of number order[i] (see unfold_triangles())
+  // `order`: how `mesh` renumbered the elements of `numbering` (see unfold_triangles())
   template <class ConcurrencyTag>
-  Solver_core(ConcurrencyTag tag, Numbering numbering, Mesh&& mesh, const std::vector<Index>& order)
-    : m_numbering(std::move(numbering)), m_mesh(std::move(mesh)), m_partition(m_mesh, tag), m_user_face(order)
-  {
-    m_internal_face.resize(order.size());
-    for_each_block<ConcurrencyTag>(order.size(), [&](std::size_t f0, std::size_t f1) {
-      for(std::size_t f = f0; f < f1; ++f)
-        m_internal_face[order[f]] = Index(f);
-    });
-  }
+  Solver_core(ConcurrencyTag tag, Numbering numbering, Mesh&& mesh, Unfolding_order&& order)
+    : m_numbering(std::move(numbering), std::move(order), tag), m_mesh(std::move(mesh)), m_partition(m_mesh, tag)
+  {}
 
   // one per solver and its copies (they share it): its propagations refer to its mesh
   Solver_core(const Solver_core&) = delete;
@@ -106,7 +101,7 @@ public:
   std::size_t number_of_non_manifold_vertices() const { return m_mesh.number_of_non_manifold_vertices(); }
   const Mesh& mesh() const { return m_mesh; }
   vertex_descriptor vertex(Index v) const { return m_numbering.vertex(v); }
-  face_descriptor face(Index f) const { return m_numbering.face(m_user_face[f]); }
+  face_descriptor face(Index f) const { return m_numbering.face(f); }
   Index checked_vertex(vertex_descriptor v, const char* what = "vertex") const { return builder().vertex_index(v, what); }
 
   // ---------------------------------------------------------------------------------------------
@@ -132,8 +127,8 @@ public:
       s.query.prior = &prior;
       s.query.add_to_field = s.query.record_origins = true;
     }
-    const auto lease = propagation();
-    Propagation& propagation = *lease;
+    const auto lease = scratch();
+    Propagation& propagation = lease->propagation;
     propagation.template run<Effective_tag<ConcurrencyTag>>(s.query, s.accuracy);
     write_distances(propagation, distances);
     const std::vector<Computation_FT>& d = propagation.distances();
@@ -166,12 +161,13 @@ public:
     Index first = 0;
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::first_sample_t>::value)
       first = checked_vertex(parameters::get_parameter(np, internal_np::first_sample_t()), "first sample");
-    const auto lease = propagation();
+    const auto lease = scratch();
+    Propagation& propagation = lease->propagation;
     const std::vector<Index> samples =
-      internal::farthest_point_sampling<Effective_tag<ConcurrencyTag>>(*lease, first, k, accuracy, progress_of(np));
+      internal::farthest_point_sampling<Effective_tag<ConcurrencyTag>>(propagation, first, k, accuracy, progress_of(np));
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::distance_map_t>::value)
-      write_distances(*lease, parameters::get_parameter(np, internal_np::distance_map_t()));
-    write_bounds_and_labels(*lease, np);
+      write_distances(propagation, parameters::get_parameter(np, internal_np::distance_map_t()));
+    write_bounds_and_labels(propagation, np);
     std::vector<vertex_descriptor> out;
     for(Index v : samples)
       out.push_back(m_numbering.vertex(v));
@@ -179,10 +175,11 @@ public:
   }
 
   // One propagation per set of source vertices, each on one thread; `row(k, distances,
-  // statistics)` is called as the k-th is done, `distances` indexed by the vertices' numbers, or
-  // `row(k, distances, statistics, reached)` if it takes the numbers of the vertices the
-  // propagation reached (every other is at +infinity): a row within a maximum distance then costs
-  // what it reaches. Everything is checked before the first propagation.
+  // statistics)` is called as the k-th is done, `distances` indexed by the user's numbers of the
+  // vertices, or `row(k, distances, statistics, reached)` if it takes the numbers of the vertices
+  // the propagation reached (every other is at +infinity): a row within a maximum distance then
+  // costs what it reaches (its vectors are written at those vertices only). Everything is checked
+  // before the first propagation.
   template <class ConcurrencyTag, class SourceSetRange, class RowFunction, class NamedParameters>
   void distances_from_each_source_set(const SourceSetRange& source_sets, const RowFunction& row,
                                       const NamedParameters& np) const
@@ -220,34 +217,21 @@ public:
       Query query = options;
       query.vertex_sources.assign(vertices.begin() + begin[k], vertices.begin() + begin[k + 1]);
       query.source_numbers.assign(query.vertex_sources.size(), 0); // the set is one source
-      const auto lease = propagation();
-      lease->template run<Sequential_tag>(query, accuracy);
-      const std::vector<Computation_FT>& d = lease->distances();
-      const auto give = [&](const std::vector<FT>& distances) {
-        if constexpr(std::is_invocable<const RowFunction&, std::size_t, const std::vector<FT>&,
-                                       const Propagation_statistics&, const std::vector<Index>&,
-                                       const std::vector<FT>&>::value)
-        {
-          if constexpr(std::is_same<FT, Computation_FT>::value)
-            row(k, distances, lease->statistics(), lease->reached(), lease->lower_bounds());
-          else
-          {
-            std::vector<FT> bounds(d.size());
-            for(std::size_t i = 0; i < d.size(); ++i)
-              bounds[i] = rounded_down(lease->lower_bounds()[i]);
-            row(k, distances, lease->statistics(), lease->reached(), bounds);
-          }
-        }
-        else if constexpr(std::is_invocable<const RowFunction&, std::size_t, const std::vector<FT>&,
-                                            const Propagation_statistics&, const std::vector<Index>&>::value)
-          row(k, distances, lease->statistics(), lease->reached());
-        else
-          row(k, distances, lease->statistics());
-      };
-      if constexpr(std::is_same<FT, Computation_FT>::value)
-        give(d);
+      const auto lease = scratch();
+      Propagation& propagation = lease->propagation;
+      propagation.template run<Sequential_tag>(query, accuracy);
+      constexpr bool with_reached = std::is_invocable<const RowFunction&, std::size_t, const std::vector<FT>&,
+                                                      const Propagation_statistics&, const std::vector<Index>&>::value;
+      constexpr bool with_bounds =
+        std::is_invocable<const RowFunction&, std::size_t, const std::vector<FT>&, const Propagation_statistics&,
+                          const std::vector<Index>&, const std::vector<FT>&>::value;
+      const User_row hand_over(*lease, propagation, m_numbering, with_bounds);
+      if constexpr(with_bounds)
+        row(k, lease->distances, propagation.statistics(), lease->reached, lease->bounds);
+      else if constexpr(with_reached)
+        row(k, lease->distances, propagation.statistics(), lease->reached);
       else
-        give(std::vector<FT>(d.begin(), d.end()));
+        row(k, lease->distances, propagation.statistics());
       return true;
     });
   }
@@ -268,7 +252,7 @@ public:
       [&](std::size_t k, const std::vector<FT>& d, const Propagation_statistics& s) {
         const auto& map = *(std::begin(distance_maps) + k);
         for(std::size_t i = 0; i < d.size(); ++i)
-          put(map, m_numbering.vertex(i), d[i]);
+          put(map, m_numbering.user_vertex(i), d[i]);
         statistics[k] = s;
       },
       np);
@@ -282,24 +266,76 @@ public:
   {
     Set_up s = set_up(sources, np);
     s.query.record_origins = s.query.record_arrivals = true;
-    const auto lease = propagation();
-    lease->template run<Effective_tag<ConcurrencyTag>>(s.query, s.accuracy);
-    return make_tree(*lease, s.query, s.targets);
+    const auto lease = scratch();
+    lease->propagation.template run<Effective_tag<ConcurrencyTag>>(s.query, s.accuracy);
+    return make_tree(lease->propagation, s.query, s.targets);
   }
 
 private:
-  // a propagation of this mesh for one query, kept for the next one (see Propagation_pool)
-  typename Propagation_pool<Propagation>::Lease propagation() const
+  // A propagation of this mesh for one query, kept for the next one (see Propagation_pool), and
+  // the vectors that hand its field over in the user's numbering (distances_from_each_source_set():
+  // +infinity but during a hand-over, their memory taken at the first)
+  struct Scratch
   {
-    return m_pool.take([this] { return std::make_unique<Propagation>(m_mesh, m_partition); });
+    Scratch(const Mesh& mesh, const Patch_partition<Computation_FT>& partition) : propagation(mesh, partition) {}
+    bool reusable() const { return propagation.reusable(); }
+    Propagation propagation;
+    std::vector<FT> distances, bounds; // per user's number of a vertex
+    std::vector<Index> reached;        // the user's numbers of the vertices the run reached
+  };
+  typename Propagation_pool<Scratch>::Lease scratch() const
+  {
+    return m_pool.take([this] { return std::make_unique<Scratch>(m_mesh, m_partition); });
   }
+
+  // The field of `propagation` in `scratch`'s vectors, in the user's numbering, at the vertices it
+  // reached (and their bounds if `bounds`), for as long as it lives: they are back at +infinity
+  // after, even if the row threw.
+  class User_row
+  {
+  public:
+    User_row(Scratch& scratch, const Propagation& propagation, const Unfolded_numbering<Numbering>& numbering, bool bounds)
+      : m_scratch(scratch)
+    {
+      const FT inf = FT(Number_type_math<Computation_FT>::infinity());
+      const std::size_t n = propagation.distances().size();
+      if(m_scratch.distances.size() != n)
+        m_scratch.distances.assign(n, inf);
+      if(bounds && m_scratch.bounds.size() != n)
+        m_scratch.bounds.assign(n, inf);
+      m_scratch.reached.clear();
+      for(Index v : propagation.reached())
+      {
+        const Index u = Index(numbering.user_number(v));
+        m_scratch.reached.push_back(u);
+        m_scratch.distances[u] = FT(propagation.distances()[v]);
+        if(bounds)
+          m_scratch.bounds[u] = rounded_down(propagation.lower_bounds()[v]);
+      }
+    }
+    ~User_row()
+    {
+      const FT inf = FT(Number_type_math<Computation_FT>::infinity());
+      for(Index u : m_scratch.reached)
+      {
+        m_scratch.distances[u] = inf;
+        if(!m_scratch.bounds.empty())
+          m_scratch.bounds[u] = inf;
+      }
+    }
+    User_row(const User_row&) = delete;
+    User_row& operator=(const User_row&) = delete;
+
+  private:
+    Scratch& m_scratch;
+  };
 
   template <class ConcurrencyTag>
   using Effective_tag = typename Effective_concurrency_tag<ConcurrencyTag, Computation_FT>::type;
 
-  Query_builder<Numbering, Mesh, Computation_FT> builder() const
+  Query_builder<Unfolded_numbering<Numbering>, Mesh, Computation_FT> builder() const
   {
-    return Query_builder<Numbering, Mesh, Computation_FT>(m_numbering, m_internal_face, m_mesh);
+    return Query_builder<Unfolded_numbering<Numbering>, Mesh, Computation_FT>(m_numbering, m_mesh);
   }
 
   // a query of sources and named parameters, checked
@@ -406,12 +442,10 @@ private:
                            : Number_type_math<Computation_FT>::infinity();
   }
 
-  Numbering m_numbering;                  // the user's vertices and faces <-> their numbers
+  Unfolded_numbering<Numbering> m_numbering; // the user's vertices and faces <-> those of m_mesh
   Mesh m_mesh;                            // intrinsic geometry and combinatorics
   Patch_partition<Computation_FT> m_partition; // the faces cut into patches for the propagation's rounds
-  std::vector<Index> m_internal_face;     // face number -> face of m_mesh
-  std::vector<Index> m_user_face;         // face of m_mesh -> face number
-  mutable Propagation_pool<Propagation> m_pool; // the propagations of the queries, between them
+  mutable Propagation_pool<Scratch> m_pool; // the propagations of the queries, between them
 };
 
 } // namespace internal

@@ -42,6 +42,13 @@ namespace CGAL {
 namespace DGG_VTP_3 {
 namespace internal {
 
+// How the unfolding renumbered the user's elements (see unfold_triangles()): face i of the mesh is
+// the user's face faces[i], vertex i the user's vertex vertices[i].
+struct Unfolding_order
+{
+  std::vector<std::uint32_t> faces, vertices;
+};
+
 // Everything the propagation needs to know about the mesh, computed once per mesh: the intrinsic
 // geometry (edge lengths, each triangle unfolded onto each of its edges) and the combinatorics, in
 // flat arrays indexed by "corner halfedges" `3 * f + k` (face `f`, corner `k`), so that a query
@@ -126,8 +133,8 @@ public:
   bool has_face_across(Index h) const { return m_opposite[h] != no_halfedge || next_twin(h) != h; }
 
   template <class ConcurrencyTag, class FT_>
-  friend std::vector<std::uint32_t> unfold_triangles(std::vector<FT_> xyz, Uninitialized_vector<std::uint32_t> corner_vertex,
-                                                     Uninitialized_vector<std::uint32_t> opposite, Unfolded_mesh<FT_>& out);
+  friend Unfolding_order unfold_triangles(std::vector<FT_> xyz, Uninitialized_vector<std::uint32_t> corner_vertex,
+                                          Uninitialized_vector<std::uint32_t> opposite, Unfolded_mesh<FT_>& out);
   template <class FT_>
   friend void link_copies(const std::vector<std::uint32_t>& group, Unfolded_mesh<FT_>& mesh);
 
@@ -200,16 +207,17 @@ private:
 };
 
 // Fills the mesh from the coordinates of the vertices (3 per vertex), the vertex at each corner
-// and the opposite of each halfedge (`no_halfedge` on the border), faces in the user's order;
-// checks the geometry. With no opposites given (a triangle soup), each halfedge a->b is matched
-// with the one halfedge b->a, if any. Returns the order of the faces: new face i is the user's
-// face order[i]. Each step is a loop over faces or vertices whose iterations write only their own
+// and the opposite of each halfedge (`no_halfedge` on the border), vertices and faces in the
+// user's order; checks the geometry. With no opposites given (a triangle soup), each halfedge a->b
+// is matched with the one halfedge b->a, if any. The mesh numbers its faces along a space-filling
+// curve and its vertices as those faces first use them; returns both orders (see
+// Unfolding_order). Errors name faces and vertices by the user's numbers. Each step is a loop over faces or vertices whose iterations write only their own
 // face's or vertex's data, run as `ConcurrencyTag` says (for_each_block()): the mesh is the same bit
 // for bit whatever the tag and the number of threads (it must be `Sequential_tag` for an exact `FT`,
 // whose numbers share their representations between copies).
 template <class ConcurrencyTag, class FT>
-std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, Uninitialized_vector<std::uint32_t> corner_vertex,
-                                            Uninitialized_vector<std::uint32_t> opposite, Unfolded_mesh<FT>& out)
+Unfolding_order unfold_triangles(std::vector<FT> xyz, Uninitialized_vector<std::uint32_t> corner_vertex,
+                                 Uninitialized_vector<std::uint32_t> opposite, Unfolded_mesh<FT>& out)
 {
   using Index = typename Unfolded_mesh<FT>::Index;
   constexpr Index no_halfedge = Unfolded_mesh<FT>::no_halfedge;
@@ -222,11 +230,13 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, Uninitialized_v
     throw std::invalid_argument("the vertices span more than the largest finite double: "
                                 "scale the mesh down (distances scale with it)");
   reorder_faces<ConcurrencyTag>(order, corner_vertex, opposite);
+  const std::vector<Index> vertex_order = reorder_vertices<ConcurrencyTag>(corner_vertex, xyz);
   out.m_corner_vertex.swap(corner_vertex);
   // corners around each vertex (CSR); the faces' spatial order makes walking them cache-friendly
   group_corners_by_vertex<ConcurrencyTag>(out.m_corner_vertex, nv, out.m_vertex_corners_begin, out.m_vertex_corners);
   if(opposite.empty())
-    opposite = matched_halfedges<ConcurrencyTag>(out.m_corner_vertex, out.m_vertex_corners_begin, out.m_vertex_corners, order);
+    opposite = matched_halfedges<ConcurrencyTag>(out.m_corner_vertex, out.m_vertex_corners_begin, out.m_vertex_corners,
+                                                 order, vertex_order);
   out.m_opposite.swap(opposite);
   out.m_length.resize(3 * nf);
   out.m_apex_x.resize(3 * nf);
@@ -375,7 +385,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, Uninitialized_v
     const Vec2<FT> min_turn = small_turn(min_angle);
     const auto check_cone = [&](std::size_t v, const Angle_sum<FT>& angle) {
       if(angle.compare(0, min_turn) < 0)
-        throw std::invalid_argument("vertex " + std::to_string(v) + " is the tip of a cone of angle " +
+        throw std::invalid_argument("vertex " + std::to_string(vertex_order[v]) + " is the tip of a cone of angle " +
                                     to_short_string(std::atan2(CGAL::to_double(angle.at.y), CGAL::to_double(angle.at.x))) +
                                     " radians (at least " + to_short_string(CGAL::to_double(min_angle)) +
                                     " is accepted)");
@@ -421,7 +431,7 @@ std::vector<std::uint32_t> unfold_triangles(std::vector<FT> xyz, Uninitialized_v
     for(std::size_t v = v0; v < v1; ++v)
       out.m_exact_pseudo_source[v] = out.m_singular[v] || angle_sum[v].compare(exactly ? 2 : 1, two_pi_less) > 0;
   });
-  return order;
+  return Unfolding_order{order, vertex_order};
 }
 
 } // namespace internal

@@ -114,6 +114,16 @@ void refuse_faces_on_one_triangle(const std::vector<std::uint32_t>& group,
                                 " (copy_of making them copies): leave all but one of them out");
 }
 
+// the groups of copy_groups(), per vertex of the prepared mesh (see Unfolding_order); a group's
+// number remains the user's number of its least point
+inline std::vector<std::uint32_t> in_unfolded_order(const std::vector<std::uint32_t>& group, const Unfolding_order& order)
+{
+  std::vector<std::uint32_t> out(group.size());
+  for(std::size_t i = 0; i < out.size(); ++i)
+    out[i] = group[order.vertices[i]];
+  return out;
+}
+
 // Links the copies of each point that faces use (`group`: per vertex, as copy_groups() gives it)
 // and the halfedges along the same edge in different sheets, in cycles (see
 // Unfolded_mesh::next_copy()); a copy becomes singular. Nothing is stored where no point has a

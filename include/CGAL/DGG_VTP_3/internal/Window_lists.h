@@ -78,6 +78,18 @@ public:
       m_peak = m_live;
   }
 
+  // asks the memory for the first window of list `h`, about to be taken: lists wait for their face
+  // to enter the propagation region, long enough for their windows to leave the caches
+  void prefetch(Index h) const
+  {
+    const Index i = m_head[h];
+    if(i != nil)
+    {
+      __builtin_prefetch(&window(i));
+      __builtin_prefetch(&m_next_blocks[i >> block_bits][i & block_mask]);
+    }
+  }
+
   // moves the windows of list `h` into `out` (cleared first) and empties the list
   void take(Index h, std::vector<Window<FT>>& out)
   {

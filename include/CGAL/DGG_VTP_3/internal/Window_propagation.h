@@ -354,6 +354,8 @@ private:
       const Index h = p.fifo.front();
       p.fifo.pop_front();
       m_scheduled[h] = 0;
+      if(!p.fifo.empty())
+        p.lists.prefetch(p.fifo.front() - p.first_halfedge);
       propagate_window_list(p, h);
     }
   }

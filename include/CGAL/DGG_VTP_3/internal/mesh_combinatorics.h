@@ -196,6 +196,45 @@ void reorder_faces(const std::vector<std::uint32_t>& order, Uninitialized_vector
     opposite.swap(reordered_opposite);
 }
 
+// Renumbers the vertices in the order the faces first use them (after reorder_faces(), the faces'
+// space order), those of no face last in their order: the propagation reads and writes per-vertex
+// arrays as it reads the faces, and a vertex's neighbours are then near it in memory (bunny_1M,
+// whose subdivision numbers vertices level by level: 24% less time at epsilon 1e-1). Relabels the
+// corners' vertices and reorders the coordinates (3 per vertex); returns the order: new vertex i
+// is vertex order[i] of before.
+template <class ConcurrencyTag, class FT>
+std::vector<std::uint32_t> reorder_vertices(Uninitialized_vector<std::uint32_t>& corner_vertex, std::vector<FT>& xyz)
+{
+  constexpr std::uint32_t none = std::uint32_t(-1);
+  const std::size_t nv = xyz.size() / 3;
+  std::vector<std::uint32_t> new_vertex(nv, none), order;
+  order.reserve(nv);
+  for(std::uint32_t v : corner_vertex) // first uses: in the faces' order, on one thread
+    if(new_vertex[v] == none)
+    {
+      new_vertex[v] = std::uint32_t(order.size());
+      order.push_back(v);
+    }
+  for(std::uint32_t v = 0; v < nv; ++v)
+    if(new_vertex[v] == none)
+    {
+      new_vertex[v] = std::uint32_t(order.size());
+      order.push_back(v);
+    }
+  for_each_block<ConcurrencyTag>(corner_vertex.size(), [&](std::size_t h0, std::size_t h1) {
+    for(std::size_t h = h0; h < h1; ++h)
+      corner_vertex[h] = new_vertex[corner_vertex[h]];
+  });
+  std::vector<FT> reordered(xyz.size());
+  for_each_block<ConcurrencyTag>(nv, [&](std::size_t v0, std::size_t v1) {
+    for(std::size_t v = v0; v < v1; ++v)
+      for(int c = 0; c < 3; ++c)
+        reordered[3 * v + c] = xyz[3 * order[v] + c];
+  });
+  xyz.swap(reordered);
+  return order;
+}
+
 // The corners (halfedges 3f+k) grouped by their vertex, in CSR form: those of vertex v are
 // corners[begin[v]] to corners[begin[v+1]-1], in increasing order. A counting sort in two stable
 // levels, so that no counter is shared between threads (atomic counters cost more than a second
@@ -243,12 +282,14 @@ void group_corners_by_vertex(const Uninitialized_vector<std::uint32_t>& corner_v
 // Both have a corner at a (a->b is the halfedge of its corner there, b->a the one before its
 // corner there), so each vertex's corners (CSR `begin`, `corners`) are matched among themselves.
 // Throws std::invalid_argument where two halfedges go from a to b: the faces do not form a
-// surface as they are. Faces are named by the user's numbering, `order`.
+// surface as they are. Faces and vertices are named by the user's numbering, `face_order` and
+// `vertex_order` (see reorder_faces(), reorder_vertices()).
 template <class ConcurrencyTag>
 Uninitialized_vector<std::uint32_t> matched_halfedges(const Uninitialized_vector<std::uint32_t>& corner_vertex,
                                                          const std::vector<std::uint32_t>& begin,
                                                          const Uninitialized_vector<std::uint32_t>& corners,
-                                                         const std::vector<std::uint32_t>& order)
+                                                         const std::vector<std::uint32_t>& face_order,
+                                                         const std::vector<std::uint32_t>& vertex_order)
 {
   const auto next = [](std::uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; };
   const auto prev = [](std::uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; };
@@ -272,9 +313,10 @@ Uninitialized_vector<std::uint32_t> matched_halfedges(const Uninitialized_vector
           if(behind[j] == ahead[i])
             opposite[first[i]] = prev(first[j]);
           if(j > i && ahead[j] == ahead[i])
-            throw std::invalid_argument("triangles " + std::to_string(order[first[i] / 3]) + " and " +
-                                        std::to_string(order[first[j] / 3]) + " both go from vertex " +
-                                        std::to_string(a) + " to vertex " + std::to_string(ahead[i]) +
+            throw std::invalid_argument("triangles " + std::to_string(face_order[first[i] / 3]) + " and " +
+                                        std::to_string(face_order[first[j] / 3]) + " both go from vertex " +
+                                        std::to_string(vertex_order[a]) + " to vertex " +
+                                        std::to_string(vertex_order[ahead[i]]) +
                                         ": their orientations disagree, or more than two triangles share the edge "
                                         "(CGAL::Polygon_mesh_processing::orient_polygon_soup() repairs both)");
         }

@@ -35,7 +35,8 @@ namespace DGG_VTP_3 {
 namespace internal {
 
 // The prior field of the named parameters prior_distance_map, prior_nearest_source_map and
-// prior_lower_bound_map, per vertex of `numbering`, checked: a distance >= 0 or +infinity, a
+// prior_lower_bound_map, per vertex of `numbering` (an Unfolded_numbering; errors name the user's
+// numbers), checked: a distance >= 0 or +infinity, a
 // label where it is finite, a lower bound in [0, distance] (without one: distance / (1 +
 // accuracy), which the contract of the prior field makes a lower bound). Returns the number the
 // first new source takes: one beyond the largest label.
@@ -57,7 +58,7 @@ std::uint32_t read_prior_field(const Numbering& numbering, FT accuracy, const Na
     const auto v = numbering.vertex(i);
     const double d = CGAL::to_double(get(distances, v));
     if(!(d >= 0.))
-      throw std::invalid_argument("the prior distance of vertex " + std::to_string(i) +
+      throw std::invalid_argument("the prior distance of vertex " + std::to_string(numbering.user_number(i)) +
                                   " must be >= 0 or +infinity; got " + as_given(d));
     if(d == std::numeric_limits<double>::infinity())
       continue;
@@ -66,7 +67,7 @@ std::uint32_t read_prior_field(const Numbering& numbering, FT accuracy, const Na
     {
       const std::size_t label = get(parameters::get_parameter(np, internal_np::prior_nearest_source_map_t()), v);
       if(label >= most_labels)
-        throw std::invalid_argument("the prior nearest source of vertex " + std::to_string(i) +
+        throw std::invalid_argument("the prior nearest source of vertex " + std::to_string(numbering.user_number(i)) +
                                     " must be a source's number where its distance is finite; got " +
                                     std::to_string(label));
       field.origin[i] = Index(nv + label);
@@ -77,7 +78,7 @@ std::uint32_t read_prior_field(const Numbering& numbering, FT accuracy, const Na
     {
       const auto lower = get(parameters::get_parameter(np, internal_np::prior_lower_bound_map_t()), v);
       if(!(CGAL::to_double(lower) >= 0. && FT(lower) <= field.distance[i]))
-        throw std::invalid_argument("the prior lower bound of vertex " + std::to_string(i) +
+        throw std::invalid_argument("the prior lower bound of vertex " + std::to_string(numbering.user_number(i)) +
                                     " must be in [0, its prior distance]; got " + as_given(CGAL::to_double(lower)));
       field.lower_bound[i] = FT(lower);
     }

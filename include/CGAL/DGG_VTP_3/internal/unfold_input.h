@@ -53,13 +53,13 @@ void store_point(const GeomTraits& gt, const Point& p, std::size_t i, std::vecto
 }
 
 // Fills the mesh from a user's triangle mesh (a free function: the graph's next(), source()...
-// would be hidden inside the class by the members of the same names). Returns the order of the
-// faces: new face i is the user's face order[i] (by the face index map). The graph is walked on
+// would be hidden inside the class by the members of the same names). Returns the orders of the
+// faces and vertices (see Unfolding_order; user numbers by the index maps). The graph is walked on
 // this thread (its ranges need not be random access); `ConcurrencyTag` is unfold_triangles()'s.
 template <class ConcurrencyTag, class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap,
           class GeomTraits>
-std::vector<std::uint32_t> unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
-                          FaceIndexMap fim, const GeomTraits& gt, Unfolded_mesh<FT>& out)
+Unfolding_order unfold_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim,
+                                     FaceIndexMap fim, const GeomTraits& gt, Unfolded_mesh<FT>& out)
 {
   using Index = typename Unfolded_mesh<FT>::Index;
   constexpr Index no_halfedge = Unfolded_mesh<FT>::no_halfedge;
@@ -125,12 +125,12 @@ bool is_negative_index(Integer v)
 // Fills the mesh from a triangle soup: `points` (a random access range, read through the point
 // map `pm`) and `triangles` (a range of ranges of 3 indices into `points`). The faces must form
 // a surface as they are (each edge shared by at most two triangles, which go along it in opposite
-// directions); vertices where several fans of triangles meet are kept. Returns the order of the
-// faces: new face i is triangle order[i]. The points (a random access range) are read as
+// directions); vertices where several fans of triangles meet are kept. Returns the orders of the
+// faces and points (see Unfolding_order). The points (a random access range) are read as
 // `ConcurrencyTag` says, and so are the triangles if they are a random access range too.
 template <class ConcurrencyTag, class FT, class PointRange, class TriangleRange, class PointMap, class GeomTraits>
-std::vector<std::uint32_t> unfold_triangle_soup(const PointRange& points, const TriangleRange& triangles, PointMap pm,
-                                                const GeomTraits& gt, Unfolded_mesh<FT>& out)
+Unfolding_order unfold_triangle_soup(const PointRange& points, const TriangleRange& triangles, PointMap pm,
+                                     const GeomTraits& gt, Unfolded_mesh<FT>& out)
 {
   using Index = typename Unfolded_mesh<FT>::Index;
   const std::size_t nv = static_cast<std::size_t>(std::distance(std::begin(points), std::end(points)));
