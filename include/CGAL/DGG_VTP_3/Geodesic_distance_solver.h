@@ -376,6 +376,42 @@ public:
   }
 
   /*!
+   * computes, for each pair (source, target) of `pairs`, the geodesic distance between them, and
+   * a certified lower bound of it: one propagation per pair, which searches toward its target
+   * (ordered by distance plus the straight distance in space still to go) and stops as soon as
+   * the target's distance is final, a fraction of a whole field. With an accuracy epsilon, the
+   * distance is within [exact, (1 + epsilon) exact] and the lower bound within [exact / (1 +
+   * epsilon), exact]; in the exact mode both are the exact distance. The distances are the same
+   * bit for bit whatever the concurrency tag and the number of threads.
+   *
+   * \tparam ConcurrencyTag `Sequential_tag` (the default) or `Parallel_tag`: the pairs are
+   *         shared among TBB's threads, each propagation on one thread
+   * \tparam PairRange a range of pairs (`std::pair`: members `first`, the source, and `second`, the
+   *         target), each a `vertex_descriptor` or a `Face_location`
+   * \tparam PairFunction a callable as `pair(std::size_t k, FT distance, FT lower_bound)`: `k` is
+   *         the number of the pair in `pairs`; `+infinity` for both if the target is unreachable
+   *         (or beyond `DGG_VTP_3::parameters::max_distance`). A callable of four parameters,
+   *         `pair(k, distance, lower_bound, path)`, also receives the shortest path, from the
+   *         source to the target (`const std::vector<Path_point>&`; empty if unreachable),
+   *         whose length is the distance. With `Parallel_tag` it is called from several threads
+   *         at once, the pairs in no particular order.
+   * \param np `accuracy`, `DGG_VTP_3::parameters::max_distance`
+   * \throws std::invalid_argument before any propagation if an element of a pair is not a vertex
+   *         or a surface point of the mesh (the message names the pair), or for the accuracy
+   *         and maximum distance as `compute_distances()`. An exception thrown by `pair` ends the
+   *         query and is rethrown.
+   */
+  template <class ConcurrencyTag = Sequential_tag, class PairRange, class PairFunction,
+            class NamedParameters = parameters::Default_named_parameters>
+  void compute_pair_distances(const PairRange& pairs, const PairFunction& pair,
+                              const NamedParameters& np = parameters::default_values()) const
+  {
+    internal::pair_distances<ConcurrencyTag>(*m_core, pairs, pair, np, [this](auto& propagation, const auto& query, const auto& places) {
+      return Shortest_path_tree<Geodesic_distance_solver>(m_core, propagation, query, places);
+    });
+  }
+
+  /*!
    * computes the distances from `sources` as `compute_distances_to_nearest_source()` does, and
    * keeps what tracing the shortest paths back needs (per vertex about 40 bytes more than the
    * distance): the paths to every vertex and to the point `targets` (named parameter) can then be

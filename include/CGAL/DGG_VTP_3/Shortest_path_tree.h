@@ -24,8 +24,11 @@
 
 #include <CGAL/Polygon_mesh_processing/locate.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <iterator>
+#include <type_traits>
 #include <memory>
 #include <stdexcept>
 #include <utility>
@@ -286,6 +289,37 @@ private:
   internal::Propagation_query<Computation_FT> m_query; // the sources
   Propagation_statistics m_statistics;    // what the propagation did
 };
+
+namespace internal {
+
+// The pairs of the solvers' compute_pair_distances(), on their Solver_core `core`; `make_tree` makes
+// the Shortest_path_tree of a propagation, its query and the place of its target, for the path.
+template <class ConcurrencyTag, class Core, class PairRange, class PairFunction, class NamedParameters, class MakeTree>
+void pair_distances(const Core& core, const PairRange& pairs, const PairFunction& pair, const NamedParameters& np,
+                    const MakeTree& make_tree)
+{
+  using Tree = decltype(make_tree(std::declval<typename Core::Propagation&>(), std::declval<const typename Core::Query&>(),
+                                  std::declval<const std::vector<typename Core::Place>&>()));
+  using Path_point = typename Tree::Path_point;
+  using FT = typename Tree::FT;
+  constexpr bool with_path =
+    std::is_invocable<const PairFunction&, std::size_t, FT, FT, const std::vector<Path_point>&>::value;
+  core.template pairs<ConcurrencyTag>(pairs, np, with_path, [&](std::size_t k, auto& propagation, const auto& query,
+                                                                 const auto& place, const auto& accuracy) {
+    const std::pair<FT, FT> d = core.distance_at(propagation, query, place, accuracy);
+    if constexpr(with_path)
+    {
+      std::vector<Path_point> path;
+      make_tree(propagation, query, std::vector<typename Core::Place>(1, place)).shortest_path_to_target(0, std::back_inserter(path));
+      std::reverse(path.begin(), path.end()); // from the source
+      pair(k, d.first, d.second, path);
+    }
+    else
+      pair(k, d.first, d.second);
+  });
+}
+
+} // namespace internal
 
 } // namespace DGG_VTP_3
 } // namespace CGAL

@@ -160,6 +160,18 @@ public:
     m_core->template distances_from_each_source_set<ConcurrencyTag>(source_sets, row, np);
   }
 
+  /// as `Geodesic_distance_solver::compute_pair_distances()`, the sources and targets being
+  /// point indices or `Face_location`s
+  template <class ConcurrencyTag = Sequential_tag, class PairRange, class PairFunction,
+            class NamedParameters = parameters::Default_named_parameters>
+  void compute_pair_distances(const PairRange& pairs, const PairFunction& pair,
+                              const NamedParameters& np = parameters::default_values()) const
+  {
+    internal::pair_distances<ConcurrencyTag>(*m_core, pairs, pair, np, [this](auto& propagation, const auto& query, const auto& places) {
+      return Shortest_path_tree<Triangle_soup_geodesic_distance_solver>(m_core, propagation, query, places);
+    });
+  }
+
   /// as `Geodesic_distance_solver::compute_shortest_path_tree()`
   template <class ConcurrencyTag = Sequential_tag, class SourceRange,
             class NamedParameters = parameters::Default_named_parameters>

@@ -70,19 +70,18 @@ public:
     }
     std::stable_sort(entries.begin(), entries.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
-    m_in_face.assign(mesh.number_of_faces(), 0);
     m_faces.reserve(entries.size());
     m_entries.reserve(entries.size());
     for(const auto& e : entries)
     {
-      m_in_face[e.first] = 1;
       m_faces.push_back(e.first);
       m_entries.push_back(e.second);
     }
   }
 
   bool empty() const { return m_count == 0; }
-  bool in_face(Index f) const { return !m_in_face.empty() && m_in_face[f] != 0; }
+  // a search among the targets' faces, not an array of the mesh's: a query costs what it reaches
+  bool in_face(Index f) const { return std::binary_search(m_faces.begin(), m_faces.end(), f); }
 
   // the windows of the list of halfedge `h` cross its face: each gives its distance to the
   // targets of the face inside its beam (`keys`: the windows' key ratio)
@@ -221,7 +220,6 @@ private:
     }
   };
   std::size_t m_count = 0;
-  std::vector<char> m_in_face;      // per face: has targets
   std::vector<Index> m_faces;       // per entry, sorted: its face
   std::vector<Entry> m_entries;
 };

@@ -129,21 +129,30 @@ public:
   // at +infinity (their least key too: nothing is said of them); returns how many are within it.
   // `pending`: no key the propagation left undone is below it (see early_termination.h), so that
   // a least key above it is not final, and it is the lower bound there (+infinity: it ran to
-  // the end).
-  std::size_t finish(FT max_distance, FT pending)
+  // the end); at the vertices `targets`, `pending_at_targets`, which may be larger (a search toward
+  // the targets leaves work pending elsewhere, below what it can give them).
+  std::size_t finish(FT max_distance, FT pending, const std::vector<Index>& targets, FT pending_at_targets)
   {
     m_reached.clear();
     for(std::size_t k = 0; k < m_reached_by_patch.shards(); ++k)
       m_reached.insert(m_reached.end(), m_reached_by_patch.members(k).begin(), m_reached_by_patch.members(k).end());
+    // in the exact mode keys are distances, which may keep a value 64 ulps above the least
+    const auto least = [this](Index v) { return m_keys.is_exact() ? distance[v] : least_key[v]; };
+    std::vector<std::pair<Index, FT>> at_targets;
+    for(Index t : targets)
+      at_targets.emplace_back(t, (std::min)(least(t), pending_at_targets));
     std::size_t within = 0;
     for(Index v : m_reached)
     {
       if(distance[v] > max_distance)
         distance[v] = least_key[v] = Number_type_math<FT>::infinity();
-      else // in the exact mode keys are distances, which may keep a value 64 ulps above the least
-        least_key[v] = (std::min)(m_keys.is_exact() ? distance[v] : least_key[v], pending);
+      else
+        least_key[v] = (std::min)(least(v), pending);
       within += distance[v] < Number_type_math<FT>::infinity();
     }
+    for(const auto& [t, key] : at_targets)
+      if(distance[t] < Number_type_math<FT>::infinity())
+        least_key[t] = key;
     return within;
   }
   const std::vector<Index>& origins() const { return m_record_origins ? m_origin : m_none; }

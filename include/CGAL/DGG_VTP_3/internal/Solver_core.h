@@ -271,6 +271,76 @@ public:
     return make_tree(lease->propagation, s.query, s.targets);
   }
 
+  // One propagation per pair (source, target) of `pairs` (vertices or surface points), each on one
+  // thread, toward its target (see Distance_to_go), and stopped once the target's distance is
+  // final; each is handed to `give(k, propagation, query, place, accuracy)` as the k-th is done,
+  // `place` that of its target (see distance_at()). With `paths`, the propagations record what
+  // tracing the paths needs. Every pair is checked before the first propagation.
+  template <class ConcurrencyTag, class PairRange, class NamedParameters, class Give>
+  void pairs(const PairRange& pairs, const NamedParameters& np, bool paths, const Give& give) const
+  {
+    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::targets_t>::value,
+                  "each pair has its target: the named parameter targets is not taken");
+    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::target_distances_t>::value &&
+                    parameters::is_default_parameter<NamedParameters, internal_np::nearest_source_map_t>::value &&
+                    parameters::is_default_parameter<NamedParameters, internal_np::lower_bound_map_t>::value,
+                  "the pair function receives each pair's distance and lower bound: the named parameters "
+                  "target_distances, nearest_source_map and lower_bound_map are not taken");
+    static_assert(parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value,
+                  "the pairs are handed to the caller one by one: it sees the progress, and may stop by "
+                  "throwing (the named parameter callback is not taken)");
+    std::vector<Set_up> set_ups;
+    std::size_t k = 0;
+    for(const auto& pair : pairs)
+    {
+      Set_up s;
+      s.accuracy = checked_accuracy(np);
+      add_max_distance(np, s.query);
+      try
+      {
+        builder().add_sources(std::array<std::decay_t<decltype(pair.first)>, 1>{{pair.first}}, s.query);
+        s.targets = builder().add_targets(std::array<std::decay_t<decltype(pair.second)>, 1>{{pair.second}}, s.query);
+      }
+      catch(const std::invalid_argument& e)
+      {
+        throw std::invalid_argument("pair " + std::to_string(k) + ": " + e.what());
+      }
+      ++k;
+      s.query.record_origins = s.query.record_arrivals = paths;
+      set_ups.push_back(std::move(s));
+    }
+    CGAL::for_each<Effective_tag<ConcurrencyTag>>(boost::irange(std::size_t(0), set_ups.size()), [&](std::size_t i) {
+      const auto lease = scratch();
+      lease->propagation.template run<Sequential_tag>(set_ups[i].query, set_ups[i].accuracy);
+      give(i, lease->propagation, set_ups[i].query, set_ups[i].targets.front(), set_ups[i].accuracy);
+      return true;
+    });
+  }
+
+  // The distance that `propagation` found at its target `place` (+infinity beyond the query's
+  // maximum distance), and a certified lower bound of the exact one: the least key of a vertex
+  // target, d / (1 + accuracy) at a point (the contract), rounded down.
+  std::pair<FT, FT> distance_at(const Propagation& propagation, const Query& query, const Place& place,
+                                Computation_FT accuracy) const
+  {
+    const Computation_FT inf = Number_type_math<Computation_FT>::infinity();
+    Computation_FT d = place.first ? propagation.distances()[place.second] : propagation.point_targets().distances()[place.second];
+    if(d > query.max_distance)
+      d = inf;
+    Computation_FT lower = inf;
+    if(d < inf)
+    {
+      if(place.first)
+        lower = propagation.lower_bounds()[place.second];
+      else
+      {
+        lower = d / (Computation_FT(1) + accuracy);
+        lower -= Tuning<Computation_FT>::rounding_margin(lower);
+      }
+    }
+    return {FT(d), rounded_down(lower)};
+  }
+
 private:
   // A propagation of this mesh for one query, kept for the next one (see Propagation_pool), and
   // the vectors that hand its field over in the user's numbering (distances_from_each_source_set():

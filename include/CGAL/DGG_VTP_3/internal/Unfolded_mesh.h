@@ -120,6 +120,10 @@ public:
   // geodesics may bend there: saddle (angle sum above 2*pi), border or non-manifold vertex
   bool is_exact_pseudo_source(Index v) const { return m_exact_pseudo_source[v] != 0; }
 
+  // the position of vertex `v` in space, rounded to float: for lower bounds of distances, which
+  // allow for the rounding (see Distance_to_go)
+  const float* position(Index v) const { return m_position.data() + 3 * std::size_t(v); }
+
   // vertices where several fans of faces meet (kept: geodesics may pass through them)
   std::size_t number_of_non_manifold_vertices() const { return m_non_manifold_vertices; }
 
@@ -147,6 +151,7 @@ private:
   std::vector<FT> m_corner_dot;             // 3F in exact types (else empty): ab . ac at each corner
   std::vector<Index> m_vertex_corners_begin;// V+1: CSR offsets into m_vertex_corners
   Uninitialized_vector<Index> m_vertex_corners; // 3F: corners grouped by vertex, in turning order
+  std::vector<float> m_position;            // 3V: the vertices' coordinates, rounded to float
   std::vector<char> m_singular;             // V: border or non-manifold vertex
   std::vector<char> m_exact_pseudo_source;  // V: pseudo-source of the exact (VTP) propagation
   std::size_t m_non_manifold_vertices = 0;
@@ -312,6 +317,11 @@ Unfolding_order unfold_triangles(std::vector<FT> xyz, Uninitialized_vector<std::
                                     " times longer than the height on it (at most " +
                                     to_short_string(CGAL::to_double(Tuning<FT>::max_sliver_ratio())) + " is accepted)");
     }
+  });
+  out.m_position.resize(xyz.size());
+  for_each_block<ConcurrencyTag>(xyz.size(), [&](std::size_t i0, std::size_t i1) {
+    for(std::size_t i = i0; i < i1; ++i)
+      out.m_position[i] = float(CGAL::to_double(xyz[i]));
   });
   xyz = std::vector<FT>(); // its memory is the peak's
 

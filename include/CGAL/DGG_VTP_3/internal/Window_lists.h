@@ -107,14 +107,14 @@ public:
     }
   }
 
-  // whether `predicate` holds for every window in the lists
+  // whether `predicate(h, w)` holds for every window w in the lists (h: its list)
   template <class Predicate>
   bool all_windows(const Predicate& predicate) const
   {
     bool all = true;
     for_each_used([&](Index h) {
       for(Index i = m_head[h]; all && i != nil; i = next(i))
-        all = predicate(window(i));
+        all = predicate(h, window(i));
     });
     return all;
   }

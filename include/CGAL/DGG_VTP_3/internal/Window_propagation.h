@@ -17,6 +17,7 @@
 #include <CGAL/DGG_VTP_3/Propagation_cancelled.h>
 #include <CGAL/DGG_VTP_3/Propagation_statistics.h>
 #include <CGAL/DGG_VTP_3/internal/Distance_bound.h>
+#include <CGAL/DGG_VTP_3/internal/Distance_to_go.h>
 #include <CGAL/DGG_VTP_3/internal/Index_set.h>
 #include <CGAL/DGG_VTP_3/internal/Patch_partition.h>
 #include <CGAL/DGG_VTP_3/internal/Point_targets.h>
@@ -110,7 +111,7 @@ public:
       m_vertices.set_source(s, query.source_numbers[k]);
       m_scheduler.commit(s, number<FT>(0));
       m_scheduler.wake(m_partition.owner(s));
-      m_patches[m_partition.owner(s)].queue.push(Queue_entry(number<FT>(0), s));
+      m_patches[m_partition.owner(s)].queue.push(Queue_entry(order(s), s));
       Emission_out out{*this, m_patches[m_partition.owner(s)]};
       m_emission.to_copies(s, number<FT>(0), number<FT>(0), out);
     }
@@ -127,7 +128,7 @@ public:
     for(Index k : m_scheduler.woken())
       m_patches[k].add_statistics(m_stats);
     m_targets.finish(m_mesh, m_vertices.distance, query);
-    m_stats.vertices_reached = m_vertices.finish(query.max_distance, m_pending_keys);
+    m_stats.vertices_reached = m_vertices.finish(query.max_distance, m_pending_keys, query.vertex_targets, m_pending_at_targets);
     m_reusable = !query.add_to_field;
   }
 
@@ -172,6 +173,17 @@ private:
     m_stats = Propagation_statistics();
     m_progress.reset();
     m_targets = Point_targets<FT>();
+    m_to_go = query.vertex_targets.empty() && query.point_targets.empty()
+                ? Distance_to_go<FT>()
+                : Distance_to_go<FT>(m_mesh, query.vertex_targets, query.point_targets);
+  }
+
+  // A vertex's place in the queues: its distance, plus the lower bound of the distance still to go
+  // to the targets of a query that has some (a search toward them: see Distance_to_go). A queue
+  // entry whose order is above this is superseded.
+  FT order(Index v) const
+  {
+    return m_to_go.active() ? m_vertices.distance[v] + m_to_go.at(m_mesh, v) : m_vertices.distance[v];
   }
 
   // ---------------------------------------------------------------------------------------------
@@ -180,7 +192,7 @@ private:
   FT nearest_queued(Index k)
   {
     auto& queue = m_patches[k].queue;
-    while(!queue.empty() && queue.top().first > m_vertices.distance[queue.top().second])
+    while(!queue.empty() && queue.top().first > order(queue.top().second))
       queue.pop(); // superseded by a later, shorter distance
     return queue.empty() ? infinity() : queue.top().first;
   }
@@ -188,12 +200,22 @@ private:
   bool has_lists_to_propagate(Index k) const { return !m_patches[k].fifo.empty(); }
 
   // whether every distance the query needs is final (see early_termination.h); `nearest`: the
-  // nearest queued vertex of all patches. Its limit serves the round's pop_limit() too.
+  // first queued vertex of all patches, by order(). Its limit serves the round's pop_limit() too.
   bool query_is_answered(FT nearest)
   {
     m_limit = early_termination_limit(*m_query, m_targets, m_mesh, m_vertices.distance);
-    const bool answered = direct_run_done() || nothing_pending_below(m_limit, nearest, m_keys, m_patches, m_scheduler.woken());
-    m_pending_keys = answered ? least_key_left(m_limit, m_keys) : infinity();
+    const auto to_go = [this](const Patch& p, Index h, const Win& w) {
+      return m_to_go.on_edge(m_mesh, p.first_halfedge + h, w.b0, w.b1);
+    };
+    const bool answered =
+      direct_run_done() || nothing_pending_below(m_limit, nearest, m_keys, m_patches, m_scheduler.woken(), to_go);
+    // the work left pending gives the targets keys above the limit's, but only them if the search
+    // went toward them
+    m_pending_at_targets = answered ? least_key_left(m_limit, m_keys) : infinity();
+    m_pending_keys = !answered || !m_to_go.active()
+                       ? m_pending_at_targets
+                       : (std::min)(m_pending_at_targets,
+                                    least_pending_key(m_keys, m_patches, m_scheduler.woken(), m_vertices.distance));
     return answered;
   }
 
@@ -210,7 +232,7 @@ private:
       const Queue_entry top = p.queue.top();
       p.queue.pop();
       const Index v = top.second;
-      if(top.first > m_vertices.distance[v])
+      if(top.first > order(v))
         continue; // superseded by a later, shorter distance
       ++p.stats.vertices_popped;
       Emission_out out{*this, p}; // lines 10-13: v as a pseudo-source
@@ -276,7 +298,7 @@ private:
     const bool smaller_key = key < m_vertices.least_key[v];
     const bool queue = m_vertices.relax(v, d, key, corner, direction, origin);
     if(queue)
-      p.queue.push(Queue_entry(m_vertices.distance[v], v));
+      p.queue.push(Queue_entry(order(v), v));
     Emission_out out{*this, p};
     if(queue || smaller_key)
       m_emission.to_copies(v, m_vertices.distance[v], m_vertices.least_key[v], out);
@@ -476,7 +498,7 @@ private:
     if constexpr(!direct_only)
       if(!m_scheduler.template hand_off<typename Scheduler::Relay_message>(p.id, m_partition.owner(v), v) &&
          m_vertices.pseudo_sources.make_emitter(v))
-        p.queue.push(Queue_entry(m_vertices.distance[v], v));
+        p.queue.push(Queue_entry(order(v), v));
   }
 
   // the build rule's own ending and stops (see Direct_distances)
@@ -510,9 +532,11 @@ private:
   const Propagation_query<FT>* m_query = nullptr;
   Progress_report m_progress;         // of the query's progress callback
   Point_targets<FT> m_targets;        // the query's targets inside faces
+  Distance_to_go<FT> m_to_go;         // to the query's targets, if any
   Propagation_statistics m_stats;
   FT m_limit = infinity();            // the largest distance of interest (see early_termination_limit)
   FT m_pending_keys = infinity();     // no key the run left undone is below it (+inf: none left)
+  FT m_pending_at_targets = infinity(); // no such key is below it at the targets
   bool m_reusable = true;             // see reusable()
 };
 

@@ -99,19 +99,21 @@ FT pop_limit(FT limit, const Key_ratio<FT>& keys)
 }
 
 // Once nothing is pending below `limit` (see nothing_pending_below()), no key left undone is below
-// this: a value v gives the key v / rho or more (see Propagation_vertices::finish)
+// this at a target: a value v gives the key v / rho or more (see Propagation_vertices::finish)
 template <class FT>
 FT least_key_left(FT limit, const Key_ratio<FT>& keys)
 {
   return keys.key(limit) - Tuning<FT>::rounding_margin(limit);
 }
 
-// Whether nothing pending can go below `limit` (beyond rounding), given the nearest queued key of
-// all patches and the window lists of the patches numbered `woken` (the others hold none), whose
-// windows' key ratio is `keys`.
-template <class FT, class Patches>
+// Whether nothing pending can give a target a value below `limit` (beyond rounding), given the
+// nearest queued vertex of all patches (its distance plus its bound to the targets, see
+// Distance_to_go: the queue's order) and the window lists of the patches numbered `woken` (the
+// others hold none), each window's values being at least its key ratio `keys` times sigma plus its
+// straight distance to its interval, and the rest of the way at least `to_go(patch, list, window)`.
+template <class FT, class Patches, class ToGo>
 bool nothing_pending_below(FT limit, FT nearest_queued, const Key_ratio<FT>& keys, const Patches& patches,
-                           const std::vector<std::uint32_t>& woken)
+                           const std::vector<std::uint32_t>& woken, const ToGo& to_go)
 {
   if(!(limit < Number_type_math<FT>::infinity()))
     return false;
@@ -119,11 +121,32 @@ bool nothing_pending_below(FT limit, FT nearest_queued, const Key_ratio<FT>& key
   if(!(nearest_queued > above))
     return false;
   for(std::uint32_t k : woken)
-    if(!patches[k].lists.all_windows([&](const Window<FT>& w) {
-         return keys.distance(w.sigma) + distance_to_interval(w.source, w.b0, w.b1) > above;
+    if(!patches[k].lists.all_windows([&](std::uint32_t h, const Window<FT>& w) {
+         return keys.distance(w.sigma) + distance_to_interval(w.source, w.b0, w.b1) + to_go(patches[k], h, w) > above;
        }))
       return false;
   return true;
+}
+
+// The least key that the work left pending may still give any vertex (a queued vertex's
+// distance over rho, a window's key at its interval), less rounding: where a query ends with work
+// left, a least key above it is not final, and this is the lower bound there (see
+// Propagation_vertices::finish). The queues hold `(order, vertex)` entries, superseded ones too.
+template <class FT, class Patches, class Distances>
+FT least_pending_key(const Key_ratio<FT>& keys, const Patches& patches, const std::vector<std::uint32_t>& woken,
+                     const Distances& distance)
+{
+  FT least = Number_type_math<FT>::infinity();
+  for(std::uint32_t k : woken)
+  {
+    for(const auto& entry : patches[k].queue)
+      least = (std::min)(least, keys.key(distance[entry.second]));
+    patches[k].lists.all_windows([&](std::uint32_t, const Window<FT>& w) {
+      least = (std::min)(least, w.sigma + distance_to_interval(w.source, w.b0, w.b1));
+      return true;
+    });
+  }
+  return least < Number_type_math<FT>::infinity() ? least - Tuning<FT>::rounding_margin(least) : least;
 }
 
 } // namespace internal
