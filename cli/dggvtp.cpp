@@ -71,7 +71,7 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          repeatable; the propagation stops as for --target
   --paths FILE           write the paths of --path-to into an OBJ file: per path a comment, its
                          points as v lines from the target to the source, and one l line
-  --fps K                farthest-point sampling of K vertices: the --source vertex (default 0),
+  --fps K                farthest-point sampling of K vertices: the --first-sample vertex,
                          then each time the vertex farthest from those chosen (the smallest
                          index on ties; unreachable vertices first; with --epsilon E, one within
                          (1 + E) of the farthest), printed on standard output one a line; the
@@ -80,6 +80,9 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          or VTK file colours the samples' cells). Each sample costs its cell,
                          not a whole field. Not with --source-point, --target, --path-to,
                          --max-distance
+  --first-sample N       the first sample of --fps: vertex N (default 0); the library's
+                         first_sample (--source N, its former spelling, still works with a
+                         warning)
   --max-distance D       stop the propagation at distance D >= 0 (inf allowed): vertices, targets
                          and paths farther away are unreached (inf)
   --exact                exact distances (VTP algorithm); the default
@@ -87,8 +90,9 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          of the exact one (E = 0 is --exact)
   --precision P          double (default) or float
   --threads T            number of threads of the preparation and the propagation, 0 = all cores
-                         (default 1); the distances are the same bit for bit for any T (without
-                         TBB at build time: one thread)
+                         (the default); the distances are the same bit for bit for any T
+                         (without TBB at build time: one thread); --threads 1 beside other jobs,
+                         e.g. one dggvtp per core in a pool of processes
   --output FILE          one line per vertex of the file, in the file's order: the distance
                          printed with %.17g, or inf if no path on the surface reaches it;
                          '-' writes to standard output
@@ -205,7 +209,7 @@ struct Options : dggvtp::Propagation_options
   std::vector<Place> targets;
   std::vector<Place> path_targets;
   double max_distance = std::numeric_limits<double>::infinity();
-  long threads = 1;
+  long threads = 0;   // 0: all cores
   std::string output;
   std::string error_bounds;
   std::string labels;
@@ -213,6 +217,8 @@ struct Options : dggvtp::Propagation_options
   std::string paths;
   std::string stats;
   std::size_t fps = 0; // --fps K: the number of samples (0: none)
+  std::optional<std::size_t> first_sample; // --first-sample N
+  bool source_as_first_sample = false;      // --fps with --source N: the former spelling of --first-sample
   std::size_t isolines = 0;
   std::vector<double> isolines_at;
   std::string isolines_output;
@@ -233,7 +239,7 @@ Options parse_options(int argc, char** argv)
   const auto places_of = [&](const std::string& option) -> std::vector<Place>& {
     return option == "--source" ? options.sources : option == "--target" ? options.targets : options.path_targets;
   };
-  dggvtp::Single_value_options single_value{"--fps", "--max-distance", "--epsilon", "--precision", "--threads", "--output", "--error-bounds",
+  dggvtp::Single_value_options single_value{"--fps", "--first-sample", "--max-distance", "--epsilon", "--precision", "--threads", "--output", "--error-bounds",
                                             "--labels", "--output-format", "--paths", "--stats", "--isolines",
                                             "--isolines-at", "--isolines-output"};
   dggvtp::Argument_reader words(argc, argv, {{"-h", "--help"}, {"-o", "--output"}, {"-s", "--source"}}, usage_text);
@@ -303,6 +309,8 @@ Options parse_options(int argc, char** argv)
       if(options.fps == 0)
         throw Usage_error("--fps needs a count >= 1");
     }
+    else if(arg == "--first-sample")
+      options.first_sample = parse_number<std::size_t>(arg, value());
     else if(arg == "--isolines")
     {
       options.isolines = parse_number<std::size_t>(arg, value());
@@ -339,10 +347,24 @@ Options parse_options(int argc, char** argv)
   if(options.mesh.empty())
     throw Usage_error("no MESH given");
   options.check();
+  if(options.first_sample && options.fps == 0)
+    throw Usage_error("--first-sample is the first sample of --fps: give --fps K");
   if(options.fps > 0 && (options.sources.size() > 1 || options.has_points() || options.stops_early() ||
                          std::isfinite(options.max_distance)))
-    throw Usage_error("--fps samples from one vertex (--source N) over the whole field: not with several sources, "
+    throw Usage_error("--fps samples from one vertex (--first-sample N) over the whole field: not with several sources, "
                       "--source-point, --target, --path-to or --max-distance");
+  if(options.fps > 0 && !options.sources.empty())
+  {
+    if(options.first_sample)
+      throw Usage_error("--first-sample and --source both give the first sample of --fps: give --first-sample alone");
+    options.source_as_first_sample = true; // the former spelling: a warning once the options are read
+  }
+  if(options.first_sample)
+  {
+    Place first;
+    first.vertex = *options.first_sample;
+    options.sources.assign(1, first);
+  }
   if(options.fps > 0 && (options.output == "-" || options.labels == "-" || options.error_bounds == "-" ||
                          options.isolines_output == "-"))
     throw Usage_error("--fps prints the samples on standard output: give the other outputs a file");
@@ -830,6 +852,8 @@ int run_main(int argc, char** argv)
     std::cerr << "error: " << e.what() << " (see dggvtp --help)\n";
     return 1;
   }
+  if(options.source_as_first_sample && !options.quiet)
+    std::cerr << "warning: --source N with --fps is deprecated: write --first-sample N (the same sample)\n";
 
   // a mistake in an output's name costs a moment, not the whole computation
   for(const auto& [option, path] : {std::make_pair("--output", &options.output), std::make_pair("--labels", &options.labels),
@@ -891,7 +915,7 @@ int run_main(int argc, char** argv)
   if(!unreachable.empty())
     std::cerr << "warning: " << unreachable << "\n";
 #ifndef CGAL_LINKED_WITH_TBB
-  if(!options.quiet && options.threads != 1)
+  if(!options.quiet && options.threads > 1) // 0, all cores, is one core without TBB: nothing to say
     std::cerr << "warning: dggvtp was built without TBB: the propagation ran on one thread\n";
 #endif
 

@@ -90,10 +90,13 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
                          space, one row each in that order (no duplicates, at least one;
                          a file named all: ./all);
                          all: every vertex, in order; fps:K: K vertices by farthest-point
-                         sampling (vertex 0 first, then each time the vertex farthest from those
-                         chosen, the smallest index on ties; unreachable vertices are the
-                         farthest; with --epsilon E, one within (1 + E) of the farthest), chosen
-                         first at the cost of a few whole fields, then computed as a list
+                         sampling (the --first-sample vertex first, then each time the vertex
+                         farthest from those chosen, the smallest index on ties; unreachable
+                         vertices are the farthest; with --epsilon E, one within (1 + E) of the
+                         farthest), chosen first at the cost of a few whole fields, then
+                         computed as a list
+  --first-sample N       the first sample of fps:K: vertex N (default 0), as dggvtp --fps K
+                         --first-sample N
   --output OUT.npy       the .npy file (C order, shape (sources, vertices)); it appears only
                          when every row is in it
   --error-bounds B.npy   a second .npy of the same shape and dtype: per row and vertex a certified
@@ -114,9 +117,10 @@ source, one column per vertex of the file, the values `dggvtp --source N` prints
   --exact                exact distances (VTP algorithm); the default
   --epsilon E            DGG-VTP with accuracy E in [0, 1] (E = 0 is --exact)
   --precision P          double (default) or float: the number type of the computation
-  --threads T            threads per process, 0 = all cores (default 1): the preparation runs on
-                         them, and the sources are shared among them (fps:K's sampling runs on
-                         them); same bytes for any T
+  --threads T            threads per process, 0 = all cores (the default; under mpirun, the cores
+                         of a node shared among its processes): the preparation runs on them,
+                         and the sources are shared among them (fps:K's sampling runs on them);
+                         same bytes for any T
   --checkpoint DIR       where the rows written so far and the record of the done rows live
                          (default OUT.npy.checkpoint); the same command run again after a kill
                          computes only the missing rows; a different command (mesh, epsilon,
@@ -176,7 +180,9 @@ struct Options : dggvtp::Propagation_options
   std::string stats;            // optional
   Npy_dtype dtype = Npy_dtype::float64;
   double max_distance = std::numeric_limits<double>::infinity(); // finite: a local distance matrix
-  long threads = 1;             // per process, 0 = all cores
+  long threads = 0;             // per process, 0 = all cores (shared among the processes of a node)
+  std::size_t first_sample = 0; // fps:K's first sample
+  bool first_sample_given = false;
   bool progress = false;        // forced on by --progress
   bool quiet = false;
   bool help = false;
@@ -198,7 +204,8 @@ Options parse_options(int argc, char** argv)
 {
   Options options;
   dggvtp::Single_value_options single_value{"--sources", "--output", "--checkpoint", "--sources-output", "--stats", "--error-bounds",
-                                            "--dtype", "--epsilon", "--precision", "--threads", "--max-distance"};
+                                            "--dtype", "--epsilon", "--precision", "--threads", "--max-distance",
+                                            "--first-sample"};
   dggvtp::Argument_reader words(argc, argv, {{"-h", "--help"}, {"-o", "--output"}, {"-s", "--sources"}}, usage_text);
   while(words.next())
   {
@@ -259,6 +266,11 @@ Options parse_options(int argc, char** argv)
         throw Usage_error("--threads must be at most 4096");
       options.threads = long(t);
     }
+    else if(arg == "--first-sample")
+    {
+      options.first_sample = parse_number<std::size_t>(arg, value());
+      options.first_sample_given = true;
+    }
     else if(arg == "--progress")
       options.progress = true;
     else if(arg == "--quiet")
@@ -278,6 +290,8 @@ Options parse_options(int argc, char** argv)
   options.check();
   if(options.sources.compare(0, 4, "fps:") == 0 && parse_number<std::size_t>("--sources fps:K", options.sources.substr(4)) == 0)
     throw Usage_error("fps:0 selects no source");
+  if(options.first_sample_given && options.sources.compare(0, 4, "fps:") != 0)
+    throw Usage_error("--first-sample is the first sample of --sources fps:K");
   options.checkpoint_given = !options.checkpoint.empty();
   if(options.local_matrix())
   {
@@ -365,9 +379,11 @@ struct Sources
   std::size_t rows = 0;              // number of sources, rows of the output
   std::vector<std::size_t> vertices; // file vertex of each row (fps:K: empty until chosen)
   std::string identity;              // what the fingerprint records of them
+  std::size_t first_sample = 0;      // fps:K's first sample (a file vertex)
 };
 
-Sources read_sources(const std::string& spec, std::size_t file_vertices)
+// the sources of `spec` (FILE, all or fps:K; fps:K's start at `first_sample`)
+Sources read_sources(const std::string& spec, std::size_t file_vertices, std::size_t first_sample)
 {
   Sources sources;
   if(spec == "all")
@@ -386,7 +402,13 @@ Sources read_sources(const std::string& spec, std::size_t file_vertices)
     if(sources.rows > file_vertices)
       throw Input_error("fps:" + std::to_string(sources.rows) + " asks for more sources than the mesh has vertices (" +
                         std::to_string(file_vertices) + ")");
-    sources.identity = "fps:" + std::to_string(sources.rows);
+    if(first_sample >= file_vertices)
+      throw Input_error("--first-sample " + std::to_string(first_sample) + " is out of range (the mesh has " +
+                        std::to_string(file_vertices) + " vertices)");
+    sources.first_sample = first_sample;
+    // vertex 0, the default, as the checkpoints of the versions without --first-sample recorded it
+    sources.identity = "fps:" + std::to_string(sources.rows) +
+                       (first_sample == 0 ? std::string() : " from vertex " + std::to_string(first_sample));
     return sources;
   }
   std::ifstream in(spec, std::ios::binary);
@@ -658,8 +680,9 @@ struct Row_values
   std::vector<double> distances, bounds;
 };
 
-// the file vertices of fps:K (`k`), sampled on `threads` threads (0 = all cores; the same bits for any number)
-using Sample_function = std::function<std::vector<std::size_t>(std::size_t k, long threads)>;
+// the file vertices of fps:K (`k`) from the file vertex `first`, sampled on `threads` threads (0 =
+// all cores; the same bits for any number)
+using Sample_function = std::function<std::vector<std::size_t>(std::size_t k, std::size_t first, long threads)>;
 // computes the rows of several sources, each one sequential propagation, on `threads` threads (0 =
 // all cores), and hands each to `done` (from any thread) with its number in `file_vertices`
 template <class Row>
@@ -709,10 +732,11 @@ Prepared prepare(std::shared_ptr<dggvtp::Loaded_soup> soup, double epsilon, doub
       r.bounds = dggvtp::certified_errors(r.distances, dggvtp::file_vertex_distances(*soup, *lower));
     return r;
   };
-  prepared.sample = [soup, solver, epsilon](std::size_t k, long threads) {
-    const std::vector<std::size_t> first = dggvtp::solver_vertices_of(*soup, 0);
+  prepared.sample = [soup, solver, epsilon](std::size_t k, std::size_t first_vertex, long threads) {
+    const std::vector<std::size_t> first = dggvtp::solver_vertices_of(*soup, first_vertex);
     if(first.empty())
-      throw Input_error("fps:K starts at vertex 0, which no face uses: give the sources as a FILE");
+      throw Input_error("fps:K starts at vertex " + std::to_string(first_vertex) +
+                        ", which no face uses: give another --first-sample, or the sources as a FILE");
     std::vector<std::size_t> samples;
     try
     {
@@ -1028,11 +1052,11 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     const Clock::time_point t0 = Clock::now();
     one.soup = std::make_shared<dggvtp::Loaded_soup>(dggvtp::load_soup(options.mesh));
     one.file_vertices = one.soup->file_vertices;
-    one.sources = read_sources(options.sources, one.file_vertices);
+    one.sources = read_sources(options.sources, one.file_vertices, options.first_sample);
     dggvtp::npy_file_size(options.dtype, one.sources.rows, one.file_vertices); // too large: error now
     one.seconds_load = seconds_since(t0);
     // one thread per process where MPI allows no threads, as for the rows
-    const long threads = comm.allows_threads() ? options.threads : 1;
+    const long threads = comm.allows_threads() ? dggvtp::threads_of_process(options.threads, comm) : 1;
     one.prepared = options.precision == "float"
                      ? prepare<CGAL::Simple_cartesian<float>>(one.soup, options.epsilon, options.max_distance, threads,
                                                               !options.error_bounds.empty())
@@ -1042,7 +1066,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     one.seconds_repair = one.prepared.seconds_make_mesh;
     const Clock::time_point t_sample = Clock::now();
     if(one.sources.farthest_point)
-      one.sources.vertices = one.prepared.sample(one.sources.rows, threads);
+      one.sources.vertices = one.prepared.sample(one.sources.rows, one.sources.first_sample, threads);
     one.seconds_sample = seconds_since(t_sample);
   });
   if(status != 0)
@@ -1053,10 +1077,10 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
       std::cout << (options.version ? dggvtp::version_text("dggvtp-batch") : std::string(usage_text));
     return 0;
   }
-  long threads = options.threads;
+  long threads = dggvtp::threads_of_process(options.threads, comm);
   if(!comm.allows_threads() && threads != 1)
   {
-    if(root && !options.quiet)
+    if(root && !options.quiet && threads > 1) // 0, all cores, is one core then: nothing to say
       std::cerr << "warning: the MPI library does not allow several threads to call it: one thread per process\n";
     threads = 1;
   }
@@ -1065,7 +1089,7 @@ int run_main(dggvtp::Communicator& comm, int argc, char** argv)
     for(const std::string& repair : one.repairs)
       std::cerr << "warning: " << options.mesh << ": " << repair << "\n";
 #ifndef CGAL_LINKED_WITH_TBB
-    if(options.threads != 1)
+    if(options.threads > 1) // 0, all cores, is one core without TBB: nothing to say
       std::cerr << "warning: dggvtp-batch was built without TBB: one thread per process\n";
 #endif
   }

@@ -322,7 +322,7 @@ def module_solver(a, mesh, precision):
         import dggvtp
     except ImportError as e:
         raise Failure(f'--bounds needs the Python module in {a.build}/python (build the target dggvtp_python): {e}')
-    return dggvtp.GeodesicSolver(*dggvtp.read_mesh(mesh), precision)
+    return dggvtp.GeodesicSolver(*dggvtp.read_mesh(mesh), precision=precision)
 
 
 def check_mesh(a, exe, mesh, workdir, say):

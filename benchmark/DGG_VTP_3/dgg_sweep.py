@@ -40,7 +40,8 @@ def dggvtp_run(dggvtp, mesh, source, mode, tmp, timeout):
     """(distances, stats) of one dggvtp process; mode is None for --exact, else epsilon."""
     out, st = os.path.join(tmp, 'd.txt'), os.path.join(tmp, 's.json')
     flags = ['--exact'] if mode is None else ['--epsilon', repr(mode)]
-    err = run([dggvtp, mesh, '--quiet', '--source', str(source), '--output', out, '--stats', st] + flags, timeout)
+    err = run([dggvtp, mesh, '--quiet', '--threads', '1', '--source', str(source), '--output', out, '--stats', st] + flags,
+              timeout)
     if err:
         raise RuntimeError(f'dggvtp {os.path.basename(mesh)} source {source} {flags}: {err}')
     with open(st) as f:

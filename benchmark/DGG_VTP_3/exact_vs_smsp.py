@@ -98,7 +98,7 @@ def symmetry_note(dggvtp, smsp, mesh, name, src, worst, ours, ref, tmp, timeout)
     d(s, w) = d(w, s), so an asymmetric pair points at the program that is off."""
     o, oj = os.path.join(tmp, 'back_ours.txt'), os.path.join(tmp, 'back_ours.json')
     r, rj = os.path.join(tmp, 'back_ref.txt'), os.path.join(tmp, 'back_ref.json')
-    if run([dggvtp, mesh, '--exact', '--quiet', '--source', str(worst), '--output', o, '--stats', oj], timeout) \
+    if run([dggvtp, mesh, '--exact', '--threads', '1', '--quiet', '--source', str(worst), '--output', o, '--stats', oj], timeout) \
             or run([smsp, mesh, str(worst), r, rj], timeout):
         return f'{name}, source {src}: worst vertex {worst}; the symmetry check failed to run'
     ob, rb = read_distances(o)[src], read_distances(r)[src]
@@ -179,7 +179,7 @@ def main():
         name = os.path.splitext(os.path.basename(mesh))[0]
         n = count_vertices(mesh)
         if n is None:  # not PLY/OFF: ask dggvtp (one extra run)
-            err = run([dggvtp, mesh, '--exact', '--quiet', '--stats', ours_json], a.timeout)
+            err = run([dggvtp, mesh, '--exact', '--threads', '1', '--quiet', '--stats', ours_json], a.timeout)
             n = None if err else json.load(open(ours_json))['vertices']
         if n is None:
             rows.append(f'| {name} | ? | - | FAILED: cannot count the vertices | | | | | | | |')
@@ -200,7 +200,7 @@ def main():
                 for f in (ours_out, ours_json, ref_out, ref_json):
                     if os.path.exists(f):
                         os.remove(f)
-                error = run([dggvtp, mesh, '--exact', '--quiet', '--source', str(src),
+                error = run([dggvtp, mesh, '--exact', '--threads', '1', '--quiet', '--source', str(src),
                              '--output', ours_out, '--stats', ours_json], a.timeout)
                 if error:
                     error = 'dggvtp ' + error

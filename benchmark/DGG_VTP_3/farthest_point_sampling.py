@@ -71,16 +71,17 @@ def main():
         for k in (int(x) for x in a.k.split(",")):
             whole, sampling = [], []
             for _ in range(a.repeat):
-                whole.append(seconds(lambda: solver.distances(0, epsilon=epsilon)))
+                whole.append(seconds(lambda: solver.distances(0, epsilon=epsilon, threads=1)))
                 samples = None
 
                 def sample():
                     nonlocal samples
-                    samples = solver.farthest_point_sampling(k, epsilon=epsilon)
+                    samples = solver.farthest_point_sampling(k, epsilon=epsilon, threads=1)
 
                 sampling.append(seconds(sample))
             w, s = statistics.median(whole), statistics.median(sampling)
-            loop, measured = loop_seconds(lambda v: solver.distances(v, epsilon=epsilon), samples, a.loop_fields)
+            loop, measured = loop_seconds(lambda v: solver.distances(v, epsilon=epsilon, threads=1), samples,
+                                          a.loop_fields)
             gdist_cell = "n/a"
             if gdist is not None and epsilon == 0.0:
                 Vd, Fi = np.ascontiguousarray(V, dtype=np.float64), np.ascontiguousarray(F, dtype=np.int32)

@@ -25,6 +25,8 @@ repeat=${2:-3}
 [ $# -gt 0 ] && shift
 options=("$@")
 [ ${#options[@]} -gt 0 ] || options=(--exact)
+# one thread unless the options say otherwise (dggvtp's default is every core)
+[[ " ${options[*]} " == *" --threads "* || " ${options[*]} " == *" --threads="* ]] || options+=(--threads 1)
 
 [ -x "$dggvtp" ] || { echo "error: $dggvtp is not an executable (set BUILD or DGGVTP)" >&2; exit 1; }
 mesh=$out/$target.ply

@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -51,8 +52,14 @@ struct Query
   std::vector<Place> path_targets; // shortest_paths()
   double epsilon = 0.;             // accuracy; 0 = exact
   double max_distance = std::numeric_limits<double>::infinity();
-  long threads = 1;                // 0 = all cores; 1 = sequential
+  long threads = 0;                // 0 = all cores; 1 = sequential
   std::function<bool()> interrupted; // asked between rounds and rows: true cancels (Propagation_cancelled)
+  // distances(): a field of earlier sources that the sources are added to, per vertex of V (null:
+  // none): their distances, the number of each vertex's nearest earlier source (-1: unreached)
+  // and the certified errors of the distances (the lower bounds being distance - error)
+  const double* prior_distances = nullptr;
+  const long long* prior_labels = nullptr;
+  const double* prior_bounds = nullptr;
 };
 
 using Paths = std::vector<std::pair<Polyline, double>>; // from each target to its source, and its length
@@ -87,9 +94,9 @@ public:
   virtual Paths shortest_paths(const Query& query, std::vector<Moved_point>& moved) const = 0;
   // farthest-point sampling of `k` vertices from query.sources[0] (a vertex): the samples, the
   // field of them into `distances` and, unless null, the number of each vertex's nearest sample
-  // into `labels`
+  // into `labels` and the certified errors of the field into `bounds`
   virtual std::vector<long long> farthest_point_sampling(const Query& query, std::size_t k, double* distances,
-                                                         long long* labels) const = 0;
+                                                         long long* labels, double* bounds) const = 0;
 };
 
 template <class Kernel>
@@ -142,6 +149,7 @@ public:
       Field field(*this, distances);
       std::vector<std::size_t> nearest(labels ? m_solver->number_of_vertices() : 0);
       std::vector<FT> lower(bounds ? m_solver->number_of_vertices() : 0);
+      const Prior_field prior(*this, query);
       with_threads(query.threads, [&](auto tag) {
         const auto field_query = [&](const auto& np) {
           if(bounds)
@@ -150,21 +158,30 @@ public:
           else
             m_solver->template compute_distances_to_nearest_source<decltype(tag)>(q.sources, field.map(), np);
         };
-        if(labels)
-          field_query(DP::nearest_source_map(CGAL::make_property_map(nearest), one_query_parameters(query)));
-        else
-          field_query(one_query_parameters(query));
+        const auto with_labels = [&](const auto& np) {
+          if(labels)
+            field_query(DP::nearest_source_map(CGAL::make_property_map(nearest), np));
+          else
+            field_query(np);
+        };
+        if(!prior.given())
+        {
+          with_labels(one_query_parameters(query));
+          return;
+        }
+        // a whole field: no max_distance (GeodesicSolver.distances refuses it)
+        const auto np = DP::prior_distance_map(
+          CGAL::make_property_map(prior.distances),
+          DP::prior_lower_bound_map(CGAL::make_property_map(prior.lower),
+                                    CGAL::parameters::accuracy(query.epsilon).callback(interruption(query))));
+        if(!prior.labels.empty())
+          with_labels(DP::prior_nearest_source_map(CGAL::make_property_map(prior.labels), np));
+        else // labels need the prior ones (GeodesicSolver.distances says so)
+          field_query(np);
       });
-      const std::vector<long long> label = finish_sources(q, nearest, field.data());
-      field.finish(labels, label);
+      field.finish(labels, prior.labels_of(q, nearest, field.data()));
       if(bounds)
-      {
-        std::vector<double> lower_file = file_vertex_distances(m_soup, lower);
-        m_record.apply(lower_file.data(), nullptr);
-        const std::vector<double> errors =
-          certified_errors(std::vector<double>(distances, distances + number_of_vertices()), lower_file);
-        std::copy(errors.begin(), errors.end(), bounds);
-      }
+        write_bounds(lower, distances, bounds);
     });
   }
 
@@ -289,19 +306,27 @@ public:
   }
 
   std::vector<long long> farthest_point_sampling(const Query& query, std::size_t k, double* distances,
-                                                 long long* labels) const override
+                                                 long long* labels, double* bounds) const override
   {
     namespace DP = CGAL::DGG_VTP_3::parameters;
     const std::size_t first = solver_place(query.sources.at(0), "first sample").vertex;
     Field field(*this, distances);
     std::vector<std::size_t> nearest(m_solver->number_of_vertices()), samples;
+    std::vector<FT> lower(bounds ? m_solver->number_of_vertices() : 0);
     with_threads(query.threads, [&](auto tag) {
-      m_solver->template farthest_point_sampling<decltype(tag)>(
-        k, std::back_inserter(samples),
-        DP::first_sample(first, DP::distance_map(field.map(), DP::nearest_source_map(CGAL::make_property_map(nearest),
-                                                  CGAL::parameters::accuracy(query.epsilon).callback(interruption(query))))));
+      const auto np = DP::first_sample(
+        first, DP::distance_map(field.map(), DP::nearest_source_map(CGAL::make_property_map(nearest),
+                                                                    CGAL::parameters::accuracy(query.epsilon)
+                                                                      .callback(interruption(query)))));
+      if(bounds)
+        m_solver->template farthest_point_sampling<decltype(tag)>(
+          k, std::back_inserter(samples), DP::lower_bound_map(CGAL::make_property_map(lower), np));
+      else
+        m_solver->template farthest_point_sampling<decltype(tag)>(k, std::back_inserter(samples), np);
     });
     field.finish(labels, labels ? sample_labels(nearest) : std::vector<long long>());
+    if(bounds)
+      write_bounds(lower, distances, bounds);
     std::vector<long long> out;
     for(std::size_t v : samples)
       out.push_back(static_cast<long long>(m_soup.file_vertex_of[v]));
@@ -309,6 +334,85 @@ public:
   }
 
 private:
+  // the file vertex of solver vertex `v`
+  std::size_t file_vertex(std::size_t v) const { return m_soup.file_vertex_of.empty() ? v : m_soup.file_vertex_of[v]; }
+
+  // per caller vertex, the certified errors of `distances` (the caller's), given the lower bounds
+  // per solver vertex
+  void write_bounds(const std::vector<FT>& lower, const double* distances, double* bounds) const
+  {
+    std::vector<double> lower_file = file_vertex_distances(m_soup, lower);
+    m_record.apply(lower_file.data(), nullptr);
+    const std::vector<double> errors =
+      certified_errors(std::vector<double>(distances, distances + number_of_vertices()), lower_file);
+    std::copy(errors.begin(), errors.end(), bounds);
+  }
+
+  // A query's prior field (Query::prior_*) per solver vertex, as the library's prior_* named
+  // parameters take it; a vertex takes the values of its file vertex (the copies of a split
+  // vertex are one point: they have its distance). The labels of the new sources follow the
+  // largest prior label.
+  struct Prior_field
+  {
+    std::vector<FT> distances, lower;
+    std::vector<std::size_t> labels; // empty without prior labels
+    long long first_new_label = 0;   // the caller's label of the first new source
+    std::size_t first_new_number = 0; // the library's number of it (past the solver vertices' largest)
+
+    Prior_field(const Soup_solver& s, const Query& query)
+    {
+      if(!query.prior_distances)
+        return;
+      const std::size_t n = s.m_solver->number_of_vertices();
+      distances.resize(n);
+      lower.resize(n);
+      for(std::size_t v = 0; v < n; ++v)
+      {
+        const std::size_t f = s.file_vertex(v);
+        const double d = query.prior_distances[f];
+        distances[v] = FT(d);
+        // the error of an unreached vertex is inf: its lower bound too
+        lower[v] = !query.prior_bounds ? distances[v] / (FT(1) + FT(query.epsilon))
+                   : std::isinf(d) ? FT(d) : FT(d - query.prior_bounds[f]);
+      }
+      if(!query.prior_labels)
+        return;
+      labels.resize(n);
+      for(std::size_t v = 0; v < n; ++v)
+      {
+        const long long l = query.prior_labels[s.file_vertex(v)];
+        labels[v] = l < 0 ? std::size_t(-1) : std::size_t(l);
+        if(l >= 0 && !std::isinf(double(distances[v]))) // as the library numbers the new sources
+          first_new_number = (std::max)(first_new_number, std::size_t(l) + 1);
+      }
+      for(std::size_t f = 0; f < s.number_of_vertices(); ++f)
+        first_new_label = (std::max)(first_new_label, query.prior_labels[f] + 1);
+    }
+    bool given() const { return !distances.empty(); }
+
+    // the labels per solver vertex, the library's nearest sources (`nearest`) as the caller numbers
+    // them: the prior labels, then the new sources' numbers in the query after first_new_label
+    template <class Places>
+    std::vector<long long> labels_of(const Places& q, std::vector<std::size_t>& nearest, FT* d) const
+    {
+      if(labels.empty())
+        return finish_sources(q, nearest, d);
+      std::vector<long long> prior(nearest.size(), -1);
+      for(std::size_t v = 0; v < nearest.size(); ++v)
+        if(nearest[v] != std::size_t(-1) && nearest[v] < first_new_number)
+        {
+          prior[v] = static_cast<long long>(nearest[v]);
+          nearest[v] = std::size_t(-1);
+        }
+        else if(nearest[v] != std::size_t(-1))
+          nearest[v] -= first_new_number;
+      std::vector<long long> label = finish_sources(q, nearest, d);
+      for(std::size_t v = 0; v < label.size(); ++v)
+        label[v] = prior[v] >= 0 ? prior[v] : label[v] < 0 ? -1 : label[v] + first_new_label;
+      return label;
+    }
+  };
+
   // The distances of one propagation per solver vertex, then per caller vertex: in double on a
   // soup without copies, the library writes straight into the caller's array.
   class Field

@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,32 @@ inline std::vector<Place> vertex_places(const Vertices& vertices, const std::str
   for(std::size_t i = 0; i < places.size(); ++i)
     places[i].vertex = std::size_t(v.at(py::ssize_t(i)));
   return places;
+}
+
+// one value per vertex, an array-like of shape (count,) converted to `dtype`; None: none
+template <class T>
+std::optional<C_array<T>> per_vertex(const Optional_array& values, const std::string& name, std::size_t count,
+                                     const char* kinds, const char* dtype)
+{
+  if(values.object.is_none())
+    return std::nullopt;
+  const py::array a = as_array(values.object, name, kinds, dtype);
+  if(a.ndim() != 1 || std::size_t(a.shape(0)) != count)
+    bad(name + " must have shape (num_vertices,) = (" + std::to_string(count) + ",), not " +
+        std::string(py::str(a.attr("shape"))));
+  return C_array<T>::ensure(a);
+}
+
+// the precision argument: "double" or "float"
+inline std::string precision_of(const Precision& precision)
+{
+  if(!py::isinstance<py::str>(precision.object))
+    throw py::type_error("precision must be a str, 'double' or 'float', not " +
+                         std::string(py::str(py::type::of(precision.object).attr("__name__"))));
+  const std::string p = py::str(precision.object);
+  if(p != "double" && p != "float")
+    bad("precision must be 'double' or 'float', not '" + p + "'");
+  return p;
 }
 
 // 3D points as a (k, 3) or (3,) array-like, or None (none); located on the surface later

@@ -29,6 +29,11 @@ from the surface) is a RuntimeWarning. Every computation releases the GIL: sever
 may query one solver at once. Ctrl-C (SIGINT) stops a call within a fraction of a second with
 KeyboardInterrupt, the solver ready for the next call. A solver pickles (for multiprocessing)
 and copies: it is rebuilt from V, F and its options.
+
+Threads: every call runs on all cores by default (threads=0); the result is the same bit for bit
+on any number of threads. In a pool of processes (multiprocessing, concurrent.futures, joblib),
+where each worker already takes a core, pass threads=1 to each call (and to GeodesicSolver), or
+the workers' threads oversubscribe the cores.
 )";
 
 const char* const input_error = R"(Input refused by the mesh loader's input policy (a ValueError).)";
@@ -55,7 +60,7 @@ not finite, a face with fewer than 3 vertices, an index out of range, or a polyg
 triangulated.
 )";
 
-const char* const solver = R"(GeodesicSolver(V, F, precision="double", *, repair=False, threads=1)
+const char* const solver = R"(GeodesicSolver(V, F, *, precision="double", repair=False, threads=0)
 
 A triangle mesh prepared once for any number of geodesic distance queries.
 
@@ -81,10 +86,12 @@ Common keyword arguments of the queries:
   epsilon: 0 (default) for exact distances, or in (0, 1] for DGG-VTP, every distance within a
       relative error epsilon of the exact one.
   max_distance: the propagation stops there; farther vertices get inf (default inf).
-  threads: threads of one propagation (TBB), 0 = all cores, default 1 (sequential); the result
-      is the same bit for bit for any number. TBB's limit is process-wide: concurrent calls
-      share the smallest.
-Sources (and targets likewise): `sources` are vertex indices (an int or a sequence), `points`
+  threads: threads of one propagation (TBB), 0 = all cores (the default), 1 = sequential; the
+      result is the same bit for bit for any number. In a pool of worker processes, pass
+      threads=1. TBB's limit is process-wide: concurrent calls with threads > 1 share the
+      smallest.
+Sources (and targets likewise): `sources` are vertex indices (an int or a sequence; required,
+[] or None where only points or face points are the sources), `points`
 are 3D points (a (k, 3) or (3,) array-like) taken at the nearest point of the surface (CGAL's
 locate_with_AABB_tree, as dggvtp --source-point; one farther than 1e-6 times the bounding box's
 diagonal gives a RuntimeWarning), `face_points` are points on faces of F as a pair (faces,
@@ -98,8 +105,9 @@ prints a warning for them.
 
 const char* const init = R"(Prepares the mesh (V, F) for queries; see the class's documentation.
 
-threads: threads of the preparation (TBB), 0 = all cores, default 1 (sequential); the prepared
-solver, and so every result, is the same bit for bit for any number.
+precision (keyword only): 'double' (default) or 'float'.
+threads: threads of the preparation (TBB), 0 = all cores (the default), 1 = sequential; the
+prepared solver, and so every result, is the same bit for bit for any number.
 
 Raises ValueError for arrays of the wrong shape or kind of numbers, an index out of range, a
 face using a vertex twice (without repair), a coordinate that is not finite, or a mesh the input
@@ -126,27 +134,41 @@ certified exact (the sources, every vertex in the exact mode), inf where unreach
 distance less the least key that reached the vertex (see the manual, "Certified error"); the
 values of dggvtp --error-bounds.
 
+prior_distances (with prior_labels and prior_bounds): adds the sources to the field of earlier
+ones, per vertex as distances() of this solver returned it (at this epsilon or a smaller one):
+the result is the field of all the sources, within the contract, and the propagation goes only
+where the new sources are nearer (the C++ prior_distance_map; farthest-point sampling uses it).
+prior_labels (needed for return_labels=True) are that field's labels; the new sources' labels
+follow the largest of them (max(prior_labels) + 1 + the index in the list of the new sources).
+prior_bounds are its certified errors (return_bounds=True); without them its lower bounds are
+prior_distances / (1 + epsilon). Not with max_distance.
+
+>>> d1, l1 = solver.distances([0, 17], return_labels=True)
+>>> d, labels = solver.distances(99, prior_distances=d1, prior_labels=l1, return_labels=True)
+
 The same values as dggvtp --source ... --source-point ... --output, bit for bit.
 Raises ValueError for an index out of range, no source, points that are not finite, barycentric
 coordinates that are negative or do not add up to 1, an epsilon outside [0, 1], a negative or NaN
-max_distance, threads < 0.
+max_distance, threads < 0, a prior field of the wrong shape or with a negative or NaN distance.
 )";
 
 const char* const distances_from_each = R"(One distance field per source vertex: a float64 array (len(sources), num_vertices) whose row k
 is distances(sources[k]) (as dggvtp-batch's rows, bit for bit). sources: vertex indices (None is
 refused: it would be num_vertices rows of num_vertices numbers; pass range(solver.num_vertices)
-to mean it). With threads != 1 the rows are
+to mean it). With threads != 1 (0, the default: all cores) the rows are
 shared among the threads, each row one sequential propagation. It holds len(sources) x
 num_vertices numbers: for the distances within a radius from many sources, see
 local_distance_matrix(). With return_bounds=True, returns (rows, bounds): bounds[k] is the
 certified error of row k, as distances(sources[k], return_bounds=True) gives it.
 )";
 
-const char* const farthest_point_sampling = R"(Farthest-point sampling: k vertices, first (default 0) then each time the vertex farthest
-from those before it (ties to the lowest index). Returns the samples, int64 (k,); with
-return_distances=True and return_labels=True, (samples, distances, labels) in that order (or
-the one asked): distances float64 (num_vertices,), each vertex's distance to the nearest sample;
-labels int64 (num_vertices,), the index in samples of that sample.
+const char* const farthest_point_sampling = R"(Farthest-point sampling: k vertices, first_sample (default 0; C++'s first_sample, dggvtp's
+--first-sample) then each time the vertex farthest from those before it (ties to the lowest
+index). Returns the samples, int64 (k,); with return_distances, return_labels and return_bounds,
+a tuple of the samples then what was asked, in that order (samples, distances, labels, bounds):
+distances float64 (num_vertices,), each vertex's distance to the nearest sample; labels int64
+(num_vertices,), the index in samples of that sample; bounds float64 (num_vertices,), the
+certified error of each distance, as distances(return_bounds=True) gives it.
 
 In the exact mode (epsilon=0) the samples are the greedy sequence; with epsilon > 0 each
 sample's exact distance to those before it is at least the largest one divided by 1 + epsilon,
@@ -155,10 +177,11 @@ before, so that it costs its Voronoi cell, not a whole field: 1000 samples cost 
 fields, not 1000. Vertices no sample reaches (another component) are at inf, the farthest: the
 next sample is the first of them. threads: the rounds of each propagation (as distances());
 the same samples for any number. Ctrl-C stops it (KeyboardInterrupt).
-Raises ValueError for k outside [1, num_vertices], first out of range, an epsilon outside
+Raises ValueError for k outside [1, num_vertices], first_sample out of range, an epsilon outside
 [0, 1], threads < 0.
 
 >>> samples, d, labels = solver.farthest_point_sampling(100, return_distances=True, return_labels=True)
+>>> samples, d, b = solver.farthest_point_sampling(10, epsilon=1e-2, return_distances=True, return_bounds=True)
 )";
 
 const char* const local_distance_matrix = R"(The distances within max_distance from each source vertex, as a scipy.sparse.csr_matrix of
@@ -174,7 +197,7 @@ return_bounds=True)). The source itself is an explicit 0 (eliminate_zeros() woul
 it). The memory is in proportion to the entries (about 12 bytes each), never num_vertices
 squared; indices are int32 unless there are more than 2^31 entries.
 
-The rows are shared among `threads` threads (0: all cores), each one sequential propagation,
+The rows are shared among `threads` threads (0, the default: all cores), each one sequential propagation,
 with the GIL released. A row costs what it reaches, not the size of the mesh: the solver keeps
 its working arrays from query to query and each row pops vertices only up to (1 + epsilon) x
 max_distance (about 0.1 ms a row of 100 neighbours, on 10,242 as on 163,842 vertices).
@@ -200,33 +223,39 @@ returns (distances, labels): labels int64, each target's nearest source (its ind
 the sources followed by the points and the face points), -1 where unreachable.
 )";
 
-const char* const shortest_paths = R"(The shortest paths on the surface from several targets (targets: vertices, target_points: 3D
-points, target_face_points: (faces, barycentric)) back to their nearest sources, from one
-propagation that stops once they are final. Returns (paths, lengths): a list of float64 arrays
-(m, 3) of points in the order targets, target_points, target_face_points (an unreachable
-target's path is empty, (0, 3)), and a float64 array of their lengths (inf where unreachable):
-the summed lengths of the segments between the returned points, which are the targets'
-distances to rounding (a few 1e-16 relative).
+const char* const distances_and_paths = R"(The distances of several targets (targets: vertices, target_points: 3D points,
+target_face_points: (faces, barycentric)) to their nearest sources and the shortest paths on the
+surface between them, from one propagation that stops once they are final. Returns (distances,
+paths): a float64 array of the distances (inf where unreachable), the summed lengths of the
+segments of the paths, which are the targets' distances to rounding (a few 1e-16 relative), and
+a list of float64 arrays (m, 3) of points, in the order targets, target_points,
+target_face_points (an unreachable target's path is empty, (0, 3)).
 
-The points run from the target to the source, as pygeodesic's paths and dggvtp --paths do; with
-source_first=True from the source to the target, as potpourri3d's find_geodesic_path(v_start,
-v_end) (v_start the source). The same points as dggvtp --path-to / --path-to-point --paths.
+The points run from the source to the target, as potpourri3d's find_geodesic_path(v_start, v_end)
+(v_start the source); with source_first=False from the target to the source, as pygeodesic's
+paths and dggvtp --paths. The same points as dggvtp --path-to / --path-to-point --paths.
+
+>>> distances, paths = solver.distances_and_paths(0, [5, 9])
 )";
 
-const char* const shortest_path = R"(The shortest path on the surface from one target (a vertex `target`, a surface point
-`target_point`, or a point on a face `target_face_point` = (face, barycentric)) back to its
-nearest source: a float64 array (m, 3) of points, from the target to the source (source_first=True:
-from the source to the target); empty (0, 3) if the target is unreachable.
-solver.shortest_path(14, 22): from vertex 22 back to vertex 14. Its length is the target's
-distance to rounding. shortest_paths() traces several from one propagation.
+const char* const geodesic_path = R"(The shortest path on the surface between the nearest source and one target (a vertex `target`, a
+surface point `target_point`, or a point on a face `target_face_point` = (face, barycentric)): a
+float64 array (m, 3) of points, from the source to the target (source_first=False: from the target
+to the source); empty (0, 3) if the target is unreachable. solver.geodesic_path(14, 22): from
+vertex 14 to vertex 22. Its length is the target's distance to rounding. distances_and_paths()
+traces several from one propagation.
+
+>>> path = solver.geodesic_path(14, 22)
 )";
 
-const char* const geodesic_distance = R"(The geodesic distance between two vertices and the shortest path between them, as pygeodesic's
-geodesicDistance(source, target): returns (distance, path), distance a float (inf if the target
-is unreachable) and path a float64 array (m, 3) of points from the target to the source
-(source_first=True: from the source to the target; (0, 3) if unreachable). The distance is the
-path's length (the target's distance to rounding, a few 1e-16 relative). One propagation, which
-stops once the target's distance is final.
+const char* const distance_and_path = R"(The geodesic distance between two vertices and the shortest path between them: returns
+(distance, path), distance a float (inf if the target is unreachable) and path a float64 array
+(m, 3) of points from the source to the target ((0, 3) if unreachable; source_first=False: from
+the target to the source, the order of pygeodesic's geodesicDistance(source, target)). The
+distance is the path's length (the target's distance to rounding, a few 1e-16 relative). One
+propagation, which stops once the target's distance is final.
+
+>>> distance, path = solver.distance_and_path(0, 1234)
 )";
 
 } // namespace doc

@@ -129,7 +129,7 @@ struct Geodesic_solver
   std::unique_ptr<Solver_interface> solver;
   std::string precision;
   bool repair = false;
-  long threads = 1; // of the preparation
+  long threads = 0; // of the preparation (0: all cores)
 
   std::size_t vertices() const { return solver->number_of_vertices(); }
 
@@ -178,7 +178,7 @@ struct Geodesic_solver
   }
 
   // the paths of one propagation as (m, 3) arrays, and their lengths
-  // (from the target to the source, or `source_first`)
+  // (from the source to the target with `source_first`, else from the target to the source)
   std::pair<std::vector<py::array_t<double>>, py::array_t<double>> paths(Query& q, const Named_places& sources,
                                                                          const Named_places& targets,
                                                                          bool source_first) const
@@ -238,9 +238,10 @@ Geodesic_solver make_geodesic_solver(const Array_like& V, const Array_like& F, c
 }
 
 // The method `name` of `c` that takes the arguments of the queries to several targets and answers
-// f(solver, query, sources, targets, flag), `flag` the last keyword argument (`flag_name`)
+// f(solver, query, sources, targets, flag), `flag` the last keyword argument (`flag_name`, default
+// `flag_default`)
 template <class Class, class F>
-void def_targets_query(Class& c, const char* name, F f, const char* flag_name, const char* doc)
+void def_targets_query(Class& c, const char* name, F f, const char* flag_name, bool flag_default, const char* doc)
 {
   c.def(
     name,
@@ -251,9 +252,9 @@ void def_targets_query(Class& c, const char* name, F f, const char* flag_name, c
       return f(s, q, s.sources(sources, points, face_points), s.targets(targets, target_points, target_face_points),
                flag);
     },
-    "sources"_a = py::none(), "targets"_a = py::none(), py::kw_only(), "points"_a = py::none(),
+    "sources"_a, "targets"_a, py::kw_only(), "points"_a = py::none(),
     "face_points"_a = py::none(), "target_points"_a = py::none(), "target_face_points"_a = py::none(),
-    "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1, py::arg(flag_name) = false, doc);
+    "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 0, py::arg(flag_name) = flag_default, doc);
 }
 
 std::pair<py::array_t<double>, py::array_t<std::int64_t>> read_mesh(const Path& path, bool repair)
@@ -346,8 +347,10 @@ PYBIND11_MODULE(_dggvtp, m)
 
   py::class_<Geodesic_solver> solver(m, "GeodesicSolver", doc::solver);
   solver
-    .def(py::init(&make_geodesic_solver), "V"_a, "F"_a, "precision"_a = "double", py::kw_only(), "repair"_a = false,
-         "threads"_a = 1, doc::init)
+    .def(py::init([](const Array_like& V, const Array_like& F, const Precision& precision, bool repair, long threads) {
+           return make_geodesic_solver(V, F, precision_of(precision), repair, threads);
+         }),
+         "V"_a, "F"_a, py::kw_only(), "precision"_a = py::str("double"), "repair"_a = false, "threads"_a = 0, doc::init)
     // pickle and copy: V and F as given, and the options; rebuilt, not copied
     .def(py::pickle(
       [](const Geodesic_solver& s) {
@@ -376,11 +379,29 @@ PYBIND11_MODULE(_dggvtp, m)
     .def(
       "distances",
       [](const Geodesic_solver& s, const Vertices& sources, const Points& points, const Face_points& face_points,
-         double epsilon, double max_distance, long threads, bool return_labels, bool return_bounds) -> Field {
+         double epsilon, double max_distance, long threads, bool return_labels, bool return_bounds,
+         const Optional_array& prior_distances, const Optional_array& prior_labels,
+         const Optional_array& prior_bounds) -> Field {
         Query q = s.query(epsilon, max_distance, threads);
         const Named_places named = s.sources(sources, points, face_points);
         q.sources = named.places;
         const py::ssize_t n = py::ssize_t(s.vertices());
+        // a field of earlier sources, which these are added to
+        const auto prior = per_vertex<double>(prior_distances, "prior_distances", s.vertices(), "iuf", "float64");
+        const auto prior_l = per_vertex<std::int64_t>(prior_labels, "prior_labels", s.vertices(), "iu", "int64");
+        const auto prior_b = per_vertex<double>(prior_bounds, "prior_bounds", s.vertices(), "iuf", "float64");
+        if(!prior && (prior_l || prior_b))
+          bad("prior_labels and prior_bounds go with prior_distances (the field they belong to)");
+        if(prior && std::isfinite(max_distance))
+          bad("prior_distances does not combine with max_distance: the field of every source is computed");
+        if(prior && return_labels && !prior_l)
+          bad("return_labels=True with prior_distances needs prior_labels (the labels of the prior field)");
+        if(prior)
+          q.prior_distances = prior->data();
+        if(prior_l)
+          q.prior_labels = reinterpret_cast<const long long*>(prior_l->data());
+        if(prior_b)
+          q.prior_bounds = prior_b->data();
         py::array_t<double> d(n);
         py::array_t<std::int64_t> labels(return_labels ? n : 0);
         py::array_t<double> bounds(return_bounds ? n : 0);
@@ -402,36 +423,49 @@ PYBIND11_MODULE(_dggvtp, m)
           return {py::make_tuple(d, return_labels ? py::object(labels) : py::object(bounds))};
         return {std::move(d)};
       },
-      "sources"_a = py::none(), py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
-      "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1, "return_labels"_a = false,
-      "return_bounds"_a = false, doc::distances)
+      "sources"_a, py::kw_only(), "points"_a = py::none(), "face_points"_a = py::none(),
+      "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 0, "return_labels"_a = false,
+      "return_bounds"_a = false, "prior_distances"_a = py::none(), "prior_labels"_a = py::none(),
+      "prior_bounds"_a = py::none(), doc::distances)
     .def(
       "farthest_point_sampling",
       [](const Geodesic_solver& s, long long k, long long first, double epsilon, long threads, bool return_distances,
-         bool return_labels) -> Field {
+         bool return_labels, bool return_bounds) -> Field {
         const std::size_t n = s.vertices();
         if(k < 1 || static_cast<unsigned long long>(k) > n)
           bad("k must be in [1, num_vertices] = [1, " + std::to_string(n) + "]; got " + std::to_string(k));
         if(first < 0 || static_cast<unsigned long long>(first) >= n)
-          bad("first " + std::to_string(first) + " is out of range (the mesh has " + std::to_string(n) + " vertices)");
+          bad("first_sample " + std::to_string(first) + " is out of range (the mesh has " + std::to_string(n) +
+              " vertices)");
         Query q = s.query(epsilon, infinity, threads);
         q.sources.resize(1);
         q.sources[0].vertex = std::size_t(first);
         py::array_t<double> d(static_cast<py::ssize_t>(n));
         py::array_t<std::int64_t> labels(return_labels ? py::ssize_t(n) : 0);
+        py::array_t<double> bounds(return_bounds ? py::ssize_t(n) : 0);
         long long* out_labels = return_labels ? reinterpret_cast<long long*>(labels.mutable_data()) : nullptr;
+        double* out_bounds = return_bounds ? bounds.mutable_data() : nullptr;
         std::vector<long long> samples;
-        run_interruptible(q, [&] { samples = s.solver->farthest_point_sampling(q, std::size_t(k), d.mutable_data(), out_labels); });
+        run_interruptible(q, [&] {
+          samples = s.solver->farthest_point_sampling(q, std::size_t(k), d.mutable_data(), out_labels, out_bounds);
+        });
         py::array_t<std::int64_t> out(py::ssize_t(samples.size()));
         std::copy(samples.begin(), samples.end(), out.mutable_data());
-        if(return_distances && return_labels)
-          return {py::make_tuple(out, d, labels)};
-        if(return_distances || return_labels)
-          return {py::make_tuple(out, return_distances ? py::object(d) : py::object(labels))};
-        return {std::move(out)};
+        // the samples, then what was asked of the field, in the order of distances()
+        py::list result;
+        result.append(out);
+        if(return_distances)
+          result.append(d);
+        if(return_labels)
+          result.append(labels);
+        if(return_bounds)
+          result.append(bounds);
+        if(result.size() == 1)
+          return {std::move(out)};
+        return {py::tuple(result)};
       },
-      "k"_a, py::kw_only(), "first"_a = 0, "epsilon"_a = 0., "threads"_a = 1, "return_distances"_a = false,
-      "return_labels"_a = false, doc::farthest_point_sampling)
+      "k"_a, py::kw_only(), "first_sample"_a = 0, "epsilon"_a = 0., "threads"_a = 0, "return_distances"_a = false,
+      "return_labels"_a = false, "return_bounds"_a = false, doc::farthest_point_sampling)
     .def(
       "distances_from_each",
       [](const Geodesic_solver& s, const Vertices& sources, double epsilon, double max_distance, long threads,
@@ -458,7 +492,7 @@ PYBIND11_MODULE(_dggvtp, m)
           return {py::make_tuple(rows, bounds)};
         return {std::move(rows)};
       },
-      "sources"_a, py::kw_only(), "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1,
+      "sources"_a, py::kw_only(), "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 0,
       "return_bounds"_a = false, doc::distances_from_each)
     .def(
       "local_distance_matrix",
@@ -502,7 +536,7 @@ PYBIND11_MODULE(_dggvtp, m)
           return {compressed_matrix<std::int32_t>(rows, columns, by_column)};
         return {compressed_matrix<std::int64_t>(rows, columns, by_column)};
       },
-      "max_distance"_a, "sources"_a = py::none(), py::kw_only(), "epsilon"_a = 0., "threads"_a = 1,
+      "max_distance"_a, "sources"_a = py::none(), py::kw_only(), "epsilon"_a = 0., "threads"_a = 0,
       "symmetric"_a = false, "format"_a = "csr", doc::local_distance_matrix);
   def_targets_query(
     solver, "target_distances",
@@ -523,14 +557,17 @@ PYBIND11_MODULE(_dggvtp, m)
                                                             reinterpret_cast<const std::int64_t*>(labels.data())))};
       return {std::move(d)};
     },
-    "return_labels", doc::target_distances);
+    "return_labels", false, doc::target_distances);
   def_targets_query(
-    solver, "shortest_paths",
+    solver, "distances_and_paths",
     [](const Geodesic_solver& s, Query& q, const Named_places& sources, const Named_places& targets,
-       bool source_first) { return s.paths(q, sources, targets, source_first); },
-    "source_first", doc::shortest_paths);
+       bool source_first) {
+      auto [paths, lengths] = s.paths(q, sources, targets, source_first);
+      return py::make_tuple(lengths, paths); // values first, as distance_and_path() and distances(return_*)
+    },
+    "source_first", true, doc::distances_and_paths);
   solver.def(
-    "shortest_path",
+    "geodesic_path",
     [](const Geodesic_solver& s, const Vertices& sources, const Vertices& target, const Points& points,
        const Face_points& face_points, const Points& target_point, const Face_points& target_face_point,
        double epsilon, double max_distance, long threads, bool source_first) {
@@ -542,11 +579,11 @@ PYBIND11_MODULE(_dggvtp, m)
             "barycentric))");
       return s.paths(q, s.sources(sources, points, face_points), t, source_first).first.front();
     },
-    "sources"_a = py::none(), "target"_a = py::none(), py::kw_only(), "points"_a = py::none(),
+    "sources"_a, "target"_a, py::kw_only(), "points"_a = py::none(),
     "face_points"_a = py::none(), "target_point"_a = py::none(), "target_face_point"_a = py::none(),
-    "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1, "source_first"_a = false, doc::shortest_path)
+    "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 0, "source_first"_a = true, doc::geodesic_path)
     .def(
-      "geodesic_distance",
+      "distance_and_path",
       [](const Geodesic_solver& s, const Vertices& source, const Vertices& target, double epsilon,
          double max_distance, long threads, bool source_first) {
         Query q = s.query(epsilon, max_distance, threads);
@@ -555,12 +592,12 @@ PYBIND11_MODULE(_dggvtp, m)
         const Named_places to = s.places(target, Points{py::none()}, Face_points{py::none()},
                                          {"target", "target_point", "target_face_point", "target"});
         if(from.places.size() != 1 || to.places.size() != 1)
-          bad("geodesic_distance takes one source vertex and one target vertex (shortest_paths() takes several)");
+          bad("distance_and_path takes one source vertex and one target vertex (distances_and_paths() takes several)");
         auto [paths, lengths] = s.paths(q, from, to, source_first);
         return py::make_tuple(py::float_(lengths.at(0)), paths.front());
       },
-      "source"_a, "target"_a, py::kw_only(), "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 1,
-      "source_first"_a = false, doc::geodesic_distance)
+      "source"_a, "target"_a, py::kw_only(), "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 0,
+      "source_first"_a = true, doc::distance_and_path)
     .def("__repr__", [](const Geodesic_solver& s) {
       return "<dggvtp.GeodesicSolver: " + std::to_string(s.vertices()) + " vertices, " +
              std::to_string(s.solver->number_of_triangles()) + " faces, " + s.precision + ">";

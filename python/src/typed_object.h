@@ -38,6 +38,8 @@ DGGVTP_PYTHON_TYPE_NAME(Path_name, "Union[str, os.PathLike]");
 DGGVTP_PYTHON_TYPE_NAME(Field_name, "Union[numpy.ndarray[numpy.float64], "
                                     "Tuple[numpy.ndarray[numpy.float64], numpy.ndarray[numpy.int64]]]");
 DGGVTP_PYTHON_TYPE_NAME(Sparse_name, "scipy.sparse.csr_matrix");
+DGGVTP_PYTHON_TYPE_NAME(Optional_array_name, "Optional[numpy.typing.ArrayLike]");
+DGGVTP_PYTHON_TYPE_NAME(Precision_name, "Literal['double', 'float']");
 
 #undef DGGVTP_PYTHON_TYPE_NAME
 
@@ -48,6 +50,9 @@ using Face_points = Typed_object<Face_points_name>;  // (faces (k,), barycentric
 using Path = Typed_object<Path_name>;                // a file name
 using Field = Typed_object<Field_name>;              // distances, or (distances, labels)
 using Sparse_matrix = Typed_object<Sparse_name>;
+using Optional_array = Typed_object<Optional_array_name>; // one value per vertex, or None
+using Precision = Typed_object<Precision_name>;           // 'double' or 'float'
+
 
 } // namespace python
 } // namespace dggvtp

@@ -1,4 +1,4 @@
-"""The CTest python_pip_install: the README's install commands, run as they are written, in a clean
+"""The CTest python_pip_install: the install commands of doc/python.md, run as they are written, in a clean
 copy of the repository (what a clone of it has: the files git tracks or would, and no build/), in a
 temporary directory, offline; after each pip install, the installed package is imported outside
 the source tree and computes a field, and its version, metadata and type information are checked;
@@ -6,7 +6,7 @@ at the end the pytest suite runs on the installed package, without dggvtp (the C
 
 usage: /usr/bin/python3 pip_install.py SOURCE_DIR VERSION   (VERSION: the CMake project's)
 The commands are the ``` block after the line `<!-- the install commands, run by the test
-python_pip_install -->` of README.md. With ccache installed, CCACHE_BASEDIR makes the compiles of
+python_pip_install -->` of doc/python.md. With ccache installed, CCACHE_BASEDIR makes the compiles of
 one run the cache of the next (the copy is somewhere else each time).
 """
 import os
@@ -25,13 +25,16 @@ def fail(message):
     sys.exit(f"FAIL (python_pip_install): {message}")
 
 
+DOCUMENT = "doc/python.md"  # its section "Install"
+
+
 def readme_commands():
-    lines = (source / "README.md").read_text().split("\n")
+    lines = (source / DOCUMENT).read_text().split("\n")
     if MARKER not in lines:
-        fail(f"README.md has no line {MARKER!r} before the install commands")
+        fail(f"{DOCUMENT} has no line {MARKER!r} before the install commands")
     start = lines.index(MARKER) + 1
     if not lines[start].startswith("```"):
-        fail("README.md: the install commands' ``` block must follow the marker line")
+        fail(f"{DOCUMENT}: the install commands' ``` block must follow the marker line")
     end = lines.index("```", start + 1)
     commands = [line.split("#")[0].strip() for line in lines[start + 1:end]]
     return [c for c in commands if c]
@@ -72,7 +75,7 @@ print(f"  {package}: dggvtp {dggvtp.__version__}, a field of {len(d)} vertices, 
 def main():
     commands = readme_commands()
     if not any("pip install" in c for c in commands):
-        fail(f"no pip install among the README's commands: {commands}")
+        fail(f"no pip install among the commands of {DOCUMENT}: {commands}")
     with tempfile.TemporaryDirectory(prefix="dggvtp_pip_") as tmp:
         tmp = pathlib.Path(tmp)
         clone, outside = tmp / "clone", tmp / "outside"
@@ -87,7 +90,7 @@ def main():
             t0 = time.monotonic()
             print(f"$ {command}", flush=True)
             if subprocess.run(["bash", "-c", command], cwd=clone, env=env).returncode != 0:
-                fail(f"the README's command failed: {command}")
+                fail(f"the command of {DOCUMENT} failed: {command}")
             print(f"  ({time.monotonic() - t0:.0f} s)", flush=True)
             if "venv" in command and " -m venv " in command:
                 python = clone / command.split()[-1] / "bin" / "python"

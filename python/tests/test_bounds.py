@@ -57,7 +57,7 @@ def test_float_bounds_stay_below_the_exact_distance():
     V, F = dggvtp.read_mesh(mesh("pinion.ply"))
     V = V.astype(np.float32).astype(np.float64)   # the surface the float solver sees
     exact = dggvtp.GeodesicSolver(V, F).distances(7)
-    single = dggvtp.GeodesicSolver(V, F, "float")
+    single = dggvtp.GeodesicSolver(V, F, precision="float")
     for epsilon in (0.0, 1e-5, 1e-2):
         d, b = single.distances(7, epsilon=epsilon, return_bounds=True)
         # d is rounded to float (half an ulp either way), the lower bound rounded down

@@ -67,7 +67,7 @@ def test_max_distance_as_dggvtp(tmp_path, solvers):
 @pytest.mark.parametrize("precision, tolerance", [("double", 1e-13), ("float", 1e-6)])
 def test_flat_grid_is_euclidean(precision, tolerance):
     V, F = grid(12)
-    d = dggvtp.GeodesicSolver(V, F, precision).distances(0)
+    d = dggvtp.GeodesicSolver(V, F, precision=precision).distances(0)
     assert np.allclose(d, np.linalg.norm(V - V[0], axis=1), rtol=tolerance, atol=tolerance)
 
 
@@ -106,7 +106,7 @@ def test_nearest_source_and_labels(solvers):
 def test_point_at_a_vertex_is_the_vertex(solvers):
     solver = solvers("pinion.ply")
     V, _ = dggvtp.read_mesh(mesh("pinion.ply"))
-    assert same_bits(solver.distances(points=V[42]), solver.distances(42))
+    assert same_bits(solver.distances(None, points=V[42]), solver.distances(42))
 
 
 def test_max_distance_cuts_the_field(solvers):
@@ -159,6 +159,8 @@ def test_one_call_is_the_solver(solvers):
     with pytest.raises(TypeError):
         dggvtp.geodesic_distances(V, F, 7, epsilom=1e-3)
     with pytest.raises(ValueError, match="no source given"):
+        dggvtp.geodesic_distances(V, F, None)
+    with pytest.raises(TypeError, match="missing required argument: 'sources'"):
         dggvtp.geodesic_distances(V, F)
 
 

@@ -71,6 +71,7 @@ def test_bad_precision():
     (dict(sources=0, threads=-2), "threads must be >= 0"),
 ])
 def test_bad_query(solver, kwargs, message):
+    kwargs.setdefault("sources", None)
     with pytest.raises(ValueError, match=message):
         solver.distances(**kwargs)
 
@@ -79,15 +80,15 @@ def test_bad_targets(solver):
     with pytest.raises(ValueError, match="target 9 is out of range"):
         solver.target_distances(0, targets=[9])
     with pytest.raises(ValueError, match="no target given"):
-        solver.target_distances(0)
+        solver.target_distances(0, None)
     with pytest.raises(ValueError, match="target_points needs finite coordinates"):
-        solver.target_distances(0, target_points=[math.inf, 0, 0])
+        solver.target_distances(0, None, target_points=[math.inf, 0, 0])
     with pytest.raises(ValueError, match="give one target"):
-        solver.shortest_path(0)
+        solver.geodesic_path(0, None)
     with pytest.raises(ValueError, match="give one target"):
-        solver.shortest_path(0, target=1, target_point=[0, 0, 0])
+        solver.geodesic_path(0, target=1, target_point=[0, 0, 0])
     with pytest.raises(ValueError, match="give one target"):
-        solver.shortest_path(0, target=[1, 2])
+        solver.geodesic_path(0, target=[1, 2])
     with pytest.raises(ValueError, match=r"epsilon must be a number in \[0, 1\]"):
         solver.distances_from_each([0, 1], epsilon=-1.0)
 
@@ -108,17 +109,17 @@ def test_bad_local_distance_matrix(solver):
 
 def test_bad_path_targets(solver):
     with pytest.raises(ValueError, match="no target given .targets, target_points or target_face_points."):
-        solver.shortest_paths(0)
+        solver.distances_and_paths(0, None)
     with pytest.raises(ValueError, match="give one target"):
-        solver.shortest_path(0, target_face_point=([0, 1], [[1, 0, 0], [0, 1, 0]]))
+        solver.geodesic_path(0, None, target_face_point=([0, 1], [[1, 0, 0], [0, 1, 0]]))
     with pytest.raises(ValueError, match="target_face_point barycentric coordinates must add up to 1"):
-        solver.shortest_path(0, target_face_point=(0, [1, 1, 0]))
+        solver.geodesic_path(0, None, target_face_point=(0, [1, 1, 0]))
 
 
 def test_point_on_mesh_without_faces():
     solver = dggvtp.GeodesicSolver([[0, 0, 0], [1, 0, 0]], np.zeros((0, 3), dtype=int))
     with pytest.raises(ValueError, match="the mesh has no face to place a point on"):
-        solver.distances(points=[0, 0, 0])
+        solver.distances(None, points=[0, 0, 0])
 
 
 def test_isolated_sources():
@@ -128,7 +129,7 @@ def test_isolated_sources():
     d = solver.distances(4)
     assert d[4] == 0 and np.all(np.isinf(d[:4]))
     with pytest.raises(ValueError, match="every source is a vertex that no face uses"):
-        solver.target_distances(4, target_points=[0, 0, 0])
+        solver.target_distances(4, None, target_points=[0, 0, 0])
     d, labels = solver.distances([0, 4], points=[1, 0, 0], return_labels=True)
     assert d[4] == 0 and labels[4] == 1 and labels[1] == 2
     assert np.all(np.isfinite(d[:4])) and np.all(labels[[0, 2, 3]] == 0)

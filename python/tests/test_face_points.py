@@ -28,8 +28,8 @@ def test_sources_are_the_3d_points(spot):
     V, F, solver = spot
     faces = [10, 2000, 5000]
     for k in range(3):
-        by_face = solver.distances(face_points=([faces[k]], B[k:k + 1]))
-        by_point = solver.distances(points=points_of(V, F, [faces[k]], B[k:k + 1]))
+        by_face = solver.distances(None, face_points=([faces[k]], B[k:k + 1]))
+        by_point = solver.distances(None, points=points_of(V, F, [faces[k]], B[k:k + 1]))
         assert close(by_face, by_point)
     d, labels = solver.distances([7], face_points=(faces, B), return_labels=True)
     d_points, labels_points = solver.distances([7], points=points_of(V, F, faces, B), return_labels=True)
@@ -41,30 +41,30 @@ def test_a_corner_is_its_vertex(spot):
     V, F, solver = spot
     for k in range(3):
         corner = np.eye(3)[k]
-        assert same_bits(solver.distances(face_points=(123, corner)), solver.distances(int(F[123, k])))
+        assert same_bits(solver.distances(None, face_points=(123, corner)), solver.distances(int(F[123, k])))
 
 
 def test_targets_and_paths(spot):
     V, F, solver = spot
     faces = [100, 4000]
     points = points_of(V, F, faces, B[:2])
-    t = solver.target_distances(7, target_face_points=(faces, B[:2]))
-    assert close(t, solver.target_distances(7, target_points=points))
-    paths, lengths = solver.shortest_paths(7, targets=[3], target_face_points=(faces, B[:2]))
-    _, point_lengths = solver.shortest_paths(7, targets=[3], target_points=points)
+    t = solver.target_distances(7, None, target_face_points=(faces, B[:2]))
+    assert close(t, solver.target_distances(7, None, target_points=points))
+    lengths, paths = solver.distances_and_paths(7, targets=[3], target_face_points=(faces, B[:2]))
+    point_lengths, _ = solver.distances_and_paths(7, targets=[3], target_points=points)
     assert close(lengths, point_lengths) and len(paths) == 3
-    assert np.allclose(paths[1][0], points[0], atol=1e-15) and np.allclose(paths[2][0], points[1], atol=1e-15)
-    one = solver.shortest_path(7, target_face_point=(faces[0], B[0]))
+    assert np.allclose(paths[1][-1], points[0], atol=1e-15) and np.allclose(paths[2][-1], points[1], atol=1e-15)
+    one = solver.geodesic_path(7, None, target_face_point=(faces[0], B[0]))
     assert np.array_equal(one, paths[1])
-    assert close(solver.target_distances(face_points=(faces, B[:2]), targets=[3]),
-                 solver.target_distances(points=points, targets=[3]))
+    assert close(solver.target_distances(None, face_points=(faces, B[:2]), targets=[3]),
+                 solver.target_distances(None, points=points, targets=[3]))
 
 
 def test_on_a_flat_grid_the_distance_is_euclidean():
     V, F = grid(6)
     solver = dggvtp.GeodesicSolver(V, F)
     x = B[0] @ V[F[17]]
-    assert np.allclose(solver.distances(face_points=(17, B[0])), np.linalg.norm(V - x, axis=1), rtol=1e-13, atol=1e-15)
+    assert np.allclose(solver.distances(None, face_points=(17, B[0])), np.linalg.norm(V - x, axis=1), rtol=1e-13, atol=1e-15)
 
 
 def test_faces_the_input_policy_turned():
@@ -76,7 +76,7 @@ def test_faces_the_input_policy_turned():
     assert solver.repairs == ["reoriented 1 faces"]
     b = np.array([0.1, 0.7, 0.2])
     x = b @ V[F[1]]
-    assert np.allclose(solver.distances(face_points=(1, b)), np.linalg.norm(V - x, axis=1), rtol=1e-13)
+    assert np.allclose(solver.distances(None, face_points=(1, b)), np.linalg.norm(V - x, axis=1), rtol=1e-13)
 
 
 def test_faces_a_repair_dropped():
@@ -87,8 +87,8 @@ def test_faces_a_repair_dropped():
         solver = dggvtp.GeodesicSolver(V, F, repair=True)
     b = np.array([0.25, 0.5, 0.25])
     x = b @ V[F[1]]
-    assert np.allclose(solver.distances(face_points=(1, b)), np.linalg.norm(V - x, axis=1), rtol=1e-13)
+    assert np.allclose(solver.distances(None, face_points=(1, b)), np.linalg.norm(V - x, axis=1), rtol=1e-13)
     # and face 2 is the solver's triangle 1
     b = np.array([0.2, 0.2, 0.6])
     x = b @ V[F[2]]
-    assert np.allclose(solver.distances(face_points=(2, b)), np.linalg.norm(V - x, axis=1), rtol=1e-13)
+    assert np.allclose(solver.distances(None, face_points=(2, b)), np.linalg.norm(V - x, axis=1), rtol=1e-13)

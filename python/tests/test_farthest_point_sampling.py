@@ -35,7 +35,7 @@ def test_exact_is_the_greedy_sequence(spot):
 
 @pytest.mark.parametrize("epsilon", [1e-1, 1e-3])
 def test_with_epsilon_each_sample_is_certified(spot, epsilon):
-    samples, d, labels = spot.farthest_point_sampling(25, epsilon=epsilon, first=7, return_distances=True,
+    samples, d, labels = spot.farthest_point_sampling(25, epsilon=epsilon, first_sample=7, return_distances=True,
                                                       return_labels=True)
     assert samples[0] == 7
     rows = spot.distances_from_each(samples)  # exact
@@ -62,7 +62,7 @@ def test_bad_input_is_refused(spot):
             spot.farthest_point_sampling(k)
     for first in (-1, n):
         with pytest.raises(ValueError, match="first"):
-            spot.farthest_point_sampling(2, first=first)
+            spot.farthest_point_sampling(2, first_sample=first)
     with pytest.raises(ValueError, match="epsilon"):
         spot.farthest_point_sampling(2, epsilon=2.0)
     with pytest.raises(ValueError, match="threads"):
@@ -77,3 +77,20 @@ def test_unsampled_components_come_first():
     assert np.all(np.isfinite(d))
     one, d1, labels = solver.farthest_point_sampling(1, return_distances=True, return_labels=True)
     assert np.isinf(d1[len(V):]).all() and (labels[len(V):] == -1).all()
+
+
+@pytest.mark.parametrize("epsilon", [0.0, 1e-2])
+def test_bounds_of_the_samples_field(spot, epsilon):
+    samples, d, labels, b = spot.farthest_point_sampling(12, epsilon=epsilon, first_sample=4, return_distances=True,
+                                                         return_labels=True, return_bounds=True)
+    exact = spot.distances(samples)
+    assert b.dtype == np.float64 and b.shape == (spot.num_vertices,)
+    assert np.all(b >= 0) and np.all(d - b <= exact * (1 + 1e-12)) and np.all(b <= epsilon * d * (1 + 1e-12))
+    if epsilon == 0:
+        assert np.all(b == 0)
+    # one flag at a time: the samples and then what was asked, in the order of distances()
+    s2, b2 = spot.farthest_point_sampling(12, epsilon=epsilon, first_sample=4, return_bounds=True)
+    assert same_bits(s2, samples) and same_bits(b2, b)
+    s3, d3, b3 = spot.farthest_point_sampling(12, epsilon=epsilon, first_sample=4, return_distances=True,
+                                              return_bounds=True)
+    assert same_bits(d3, d) and same_bits(b3, b)

@@ -17,7 +17,7 @@ def test_float_within_the_contract(name):
     V, F = dggvtp.read_mesh(mesh(name))
     V = V.astype(np.float32).astype(np.float64)   # the surface the float solver sees
     double = dggvtp.GeodesicSolver(V, F)
-    single = dggvtp.GeodesicSolver(V, F, "float")
+    single = dggvtp.GeodesicSolver(V, F, precision="float")
     for source in (0, len(V) // 2):
         exact = double.distances(source)
         reached = exact > 0

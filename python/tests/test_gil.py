@@ -64,12 +64,12 @@ def test_the_test_sees_a_call_holding_the_gil():
 def test_gil_released(bunny, query):
     calls = {
         "distances": lambda: bunny.distances(0, epsilon=1e-4),
-        "points": lambda: bunny.distances(points=[0.0, 0.1, 0.0], epsilon=1e-4),
-        "face_points": lambda: bunny.distances(face_points=(77, [0.2, 0.3, 0.5]), epsilon=1e-4),
+        "points": lambda: bunny.distances(None, points=[0.0, 0.1, 0.0], epsilon=1e-4),
+        "face_points": lambda: bunny.distances(None, face_points=(77, [0.2, 0.3, 0.5]), epsilon=1e-4),
         "labels": lambda: bunny.distances([0, 9], epsilon=1e-4, return_labels=True),
         "from_each": lambda: bunny.distances_from_each([0, 9], epsilon=1e-4),
-        "path": lambda: bunny.shortest_path(0, target=20000, epsilon=1e-4),
-        "paths": lambda: bunny.shortest_paths(0, targets=[20000, 30000], epsilon=1e-4),
+        "path": lambda: bunny.geodesic_path(0, target=20000, epsilon=1e-4),
+        "paths": lambda: bunny.distances_and_paths(0, targets=[20000, 30000], epsilon=1e-4),
         "local_matrix": lambda: bunny.local_distance_matrix(0.02, range(0, 37706, 50), threads=2),
     }
     assert counter_moves_during(calls[query])

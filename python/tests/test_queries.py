@@ -22,14 +22,15 @@ def test_target_distances_as_dggvtp(bunny):
 
 
 @needs_cli
-def test_shortest_path_as_dggvtp(tmp_path, bunny):
-    for target in (dict(target=1000), dict(target_point=[0.0, 0.1, 0.0])):
-        path = bunny.shortest_path(0, **target)
-        option = ["--path-to", 1000] if "target" in target else ["--path-to-point", 0.0, 0.1, 0.0]
+def test_geodesic_path_as_dggvtp(tmp_path, bunny):
+    for target in (dict(target=1000), dict(target=None, target_point=[0.0, 0.1, 0.0])):
+        path = bunny.geodesic_path(0, **target, source_first=False)  # dggvtp --paths: from the target
+        option = ["--path-to", 1000] if target["target"] else ["--path-to-point", 0.0, 0.1, 0.0]
         length = run_cli_lines(mesh("bunny.ply"), "--source", 0, *option, "--paths", tmp_path / "p.obj")[0]
         expected = np.array([[float(x) for x in line.split()[1:]]
                              for line in open(tmp_path / "p.obj") if line.startswith("v ")])
         assert np.array_equal(path, expected)
+        assert np.array_equal(bunny.geodesic_path(0, **target), expected[::-1])  # by default from the source
         assert np.linalg.norm(np.diff(path, axis=0), axis=1).sum() == pytest.approx(length, rel=1e-12)
 
 
@@ -39,20 +40,20 @@ def test_targets_are_the_field(bunny):
     assert t[0] == full[1000] and t[1] == full[20000]
 
 
-def test_shortest_path(bunny):
+def test_geodesic_path(bunny):
     V, F = dggvtp.read_mesh(mesh("bunny.ply"))
-    path = bunny.shortest_path(0, target=1000)
+    path = bunny.geodesic_path(0, target=1000)
     assert path.ndim == 2 and path.shape[1] == 3 and len(path) >= 2 and path.dtype == np.float64
-    assert np.array_equal(path[0], V[1000]) and np.array_equal(path[-1], V[0])
+    assert np.array_equal(path[0], V[0]) and np.array_equal(path[-1], V[1000])  # from the source to the target
     length = np.linalg.norm(np.diff(path, axis=0), axis=1).sum()
     assert length == pytest.approx(bunny.distances(0)[1000], rel=1e-12)
 
 
-def test_shortest_paths_of_one_propagation(bunny):
+def test_distances_and_paths_of_one_propagation(bunny):
     targets, points = [1000, 20000, 0], [[0.0, 0.1, 0.0]]
-    paths, lengths = bunny.shortest_paths(0, targets=targets, target_points=points)
+    lengths, paths = bunny.distances_and_paths(0, targets=targets, target_points=points)
     assert len(paths) == 4 and lengths.shape == (4,) and lengths.dtype == np.float64
-    one_by_one = [bunny.shortest_path(0, target=t) for t in targets] + [bunny.shortest_path(0, target_point=points[0])]
+    one_by_one = [bunny.geodesic_path(0, target=t) for t in targets] + [bunny.geodesic_path(0, None, target_point=points[0])]
     for path, length, alone in zip(paths, lengths, one_by_one):
         assert np.array_equal(path, alone)
         assert np.linalg.norm(np.diff(path, axis=0), axis=1).sum() == pytest.approx(length, rel=1e-12, abs=0)
@@ -63,7 +64,7 @@ def test_shortest_paths_of_one_propagation(bunny):
 
 def test_straight_path_on_a_flat_grid():
     V, F = grid(8)
-    paths, lengths = dggvtp.GeodesicSolver(V, F).shortest_paths(0, targets=[80, 44])
+    lengths, paths = dggvtp.GeodesicSolver(V, F).distances_and_paths(0, targets=[80, 44])
     for path, length, target in zip(paths, lengths, [80, 44]):
         assert length == pytest.approx(np.linalg.norm(V[target]), rel=1e-13)
         # every point on the segment from the target to the source
@@ -77,11 +78,11 @@ def test_unreachable_path_is_empty():
         solver = dggvtp.GeodesicSolver(V, [[0, 1, 2], [3, 4, 5]])
         solver.distances(0)
     with pytest.warns(RuntimeWarning, match="1 of 1 paths are unreachable"):
-        assert solver.shortest_path(0, target=4).shape == (0, 3)
+        assert solver.geodesic_path(0, target=4).shape == (0, 3)
     with pytest.warns(RuntimeWarning, match="1 of 2 targets are unreachable"):
         assert np.isinf(solver.target_distances(0, targets=[4, 1])[0])
     with pytest.warns(RuntimeWarning, match="1 of 2 paths are unreachable"):
-        paths, lengths = solver.shortest_paths(0, targets=[4, 1])
+        lengths, paths = solver.distances_and_paths(0, targets=[4, 1])
     assert paths[0].shape == (0, 3) and np.isinf(lengths[0]) and lengths[1] == 1
 
 
@@ -105,7 +106,8 @@ def test_distances_from_each_warns_for_unreachable_rows():
 def test_help_and_attributes(bunny):
     for f in (dggvtp.read_mesh, dggvtp.GeodesicSolver, dggvtp.GeodesicSolver.distances,
               dggvtp.GeodesicSolver.distances_from_each, dggvtp.GeodesicSolver.target_distances,
-              dggvtp.GeodesicSolver.shortest_path, dggvtp.GeodesicSolver.shortest_paths,
+              dggvtp.GeodesicSolver.geodesic_path, dggvtp.GeodesicSolver.distances_and_paths,
+              dggvtp.GeodesicSolver.distance_and_path, dggvtp.GeodesicSolver.farthest_point_sampling,
               dggvtp.GeodesicSolver.local_distance_matrix, dggvtp.GeodesicSolver.__init__, dggvtp.geodesic_distances):
         assert f.__doc__ and len(f.__doc__) > 40, f
     assert bunny.num_vertices == 37706 and bunny.num_faces == 75408 and bunny.precision == "double"

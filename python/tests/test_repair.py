@@ -132,8 +132,8 @@ def test_point_far_from_the_surface_warns():
         solver.target_distances(0, target_points=[2, 0, 0])
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # a point on the surface says nothing
-        solver.distances(points=[0.25, 0.5, 0])
+        solver.distances(None, points=[0.25, 0.5, 0])
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # and a warning made an error by the filter is raised
         with pytest.raises(RuntimeWarning):
-            solver.distances(points=[0.25, 0.5, 3])
+            solver.distances(None, points=[0.25, 0.5, 3])

@@ -73,8 +73,8 @@ def test_targets_by_position():
     V, F = grid(6)
     s = dggvtp.GeodesicSolver(V, F)
     assert np.array_equal(s.target_distances([1], [2]), s.target_distances(sources=[1], targets=[2]))
-    assert np.array_equal(s.shortest_path(14, 22), s.shortest_path(sources=14, target=22))
-    paths, lengths = s.shortest_paths(0, [5, 7])
+    assert np.array_equal(s.geodesic_path(14, 22), s.geodesic_path(sources=14, target=22))
+    lengths, paths = s.distances_and_paths(0, [5, 7])
     assert len(paths) == 2 and lengths.shape == (2,)
 
 
@@ -103,6 +103,9 @@ def test_type_errors_are_short():
         dggvtp.GeodesicSolver(V, F, "double", "float")
     assert "too many positional arguments" in short(e)
     with pytest.raises(TypeError) as e:
+        s.distances()
+    assert "missing required argument: 'sources'" in short(e)
+    with pytest.raises(TypeError) as e:
         s.distances(0, threads=1.5)
     assert "threads must be an int" in short(e)
     with pytest.raises(TypeError) as e:
@@ -117,26 +120,28 @@ def test_type_errors_are_short():
 
 def test_path_order_pair_and_labels(bunny):
     V, F, s = bunny
-    back = s.shortest_path(14, 2200)
-    forth = s.shortest_path(14, 2200, source_first=True)
+    forth = s.geodesic_path(14, 2200)                      # from the source, by default
+    back = s.geodesic_path(14, 2200, source_first=False)
     assert np.array_equal(forth, back[::-1])
-    assert np.array_equal(back[0], V[2200]) and np.array_equal(back[-1], V[14])
-    paths, lengths = s.shortest_paths(14, [2200, 300], source_first=True)
+    assert np.array_equal(forth[0], V[14]) and np.array_equal(forth[-1], V[2200])
+    lengths, paths = s.distances_and_paths(14, [2200, 300])  # values first, as (distance, path)
     assert np.array_equal(paths[0], forth)
-    distance, path = s.geodesic_distance(14, 2200)
-    assert isinstance(distance, float) and np.array_equal(path, back)
+    lengths_back, paths_back = s.distances_and_paths(14, [2200, 300], source_first=False)
+    assert np.array_equal(paths_back[0], back) and np.array_equal(lengths_back, lengths)
+    distance, path = s.distance_and_path(14, 2200)
+    assert isinstance(distance, float) and np.array_equal(path, forth)
     assert distance == lengths[0]
     assert distance == pytest.approx(s.target_distances(14, 2200)[0], rel=1e-14)
-    distance, path = s.geodesic_distance(14, 2200, source_first=True, epsilon=1e-2)
-    assert np.array_equal(path[0], V[14])
+    distance, path = s.distance_and_path(14, 2200, source_first=False, epsilon=1e-2)
+    assert np.array_equal(path[0], V[2200])
     d, labels = s.target_distances([14, 3000], [2200, 14, 3000], return_labels=True)
     field, field_labels = s.distances([14, 3000], return_labels=True)
     assert np.array_equal(d, field[[2200, 14, 3000]]) and np.array_equal(labels, field_labels[[2200, 14, 3000]])
     assert labels.dtype == np.int64 and list(labels[1:]) == [0, 1]
-    d, labels = s.target_distances(14, target_points=[V[2200] + 1e-9, V[14]], return_labels=True)
+    d, labels = s.target_distances(14, None, target_points=[V[2200] + 1e-9, V[14]], return_labels=True)
     assert list(labels) == [0, 0] and d[1] == 0
     with pytest.raises(ValueError, match="one source vertex and one target vertex"):
-        s.geodesic_distance([1, 2], 3)
+        s.distance_and_path([1, 2], 3)
 
 
 def test_unreachable_labels_and_pair():
@@ -150,7 +155,7 @@ def test_unreachable_labels_and_pair():
     d, labels = s.target_distances(0, [1, 15], max_distance=0.5, return_labels=True)
     assert np.isinf(d[1]) and labels[1] == -1
     with pytest.warns(RuntimeWarning):
-        distance, path = s.geodesic_distance(0, len(V))
+        distance, path = s.distance_and_path(0, len(V))
     assert np.isinf(distance) and path.shape == (0, 3)
 
 
@@ -198,7 +203,7 @@ def test_pickle_and_copy(bunny):
     for t in (pickle.loads(pickle.dumps(s)), copy.deepcopy(s), copy.copy(s)):
         assert isinstance(t, dggvtp.GeodesicSolver) and t is not s
         assert np.array_equal(t.distances(7, epsilon=1e-3), s.distances(7, epsilon=1e-3))
-    f = dggvtp.GeodesicSolver(V, F, "float", repair=True)
+    f = dggvtp.GeodesicSolver(V, F, precision="float", repair=True)
     g = pickle.loads(pickle.dumps(f))
     assert g.precision == "float" and np.array_equal(g.distances(5), f.distances(5))
     with multiprocessing.get_context("spawn").Pool(2) as pool:
@@ -208,10 +213,11 @@ def test_pickle_and_copy(bunny):
 
 def test_docstrings():
     first = dggvtp.GeodesicSolver.__doc__.split("\n")[0]
-    assert "threads=1" in first, first
-    doc = dggvtp.GeodesicSolver.shortest_paths.__doc__
-    assert "summed lengths" in doc and "source_first" in doc and "from the target to the source" in doc
+    assert "*, precision=\"double\"" in first and "threads=0" in first, first
+    doc = dggvtp.GeodesicSolver.distances_and_paths.__doc__
+    assert "summed lengths" in doc and "source_first" in doc and "from the source to the target" in doc
     assert "potpourri3d" in doc and "pygeodesic" in doc
+    assert "threads=1" in dggvtp.__doc__ and "pool" in dggvtp.__doc__  # how to cap the threads in a pool
 
 
 def test_gitignore_covers_the_readme_install():
@@ -221,13 +227,14 @@ def test_gitignore_covers_the_readme_install():
 
 
 MYPY_PROGRAM = '''
+from typing import Literal
 import numpy as np
 import dggvtp
 import dggvtp.gdist as gdist
 V, F = dggvtp.read_mesh("mesh.ply")
-precision: str = "float"
+precision: Literal["double", "float"] = "float"
 labelled: bool = bool(len(V) > 3)
-s = dggvtp.GeodesicSolver(V, F, precision, repair=False, threads=1)
+s = dggvtp.GeodesicSolver(V, F, precision=precision, repair=False, threads=1)
 d = s.distances(0, epsilon=np.float32(1e-3), max_distance=np.float64(2.0))
 either = s.distances(0, return_labels=labelled)
 d2, labels = s.distances([0, 1], return_labels=True)
@@ -236,9 +243,12 @@ t2, tl = s.target_distances(0, [1, 2], return_labels=True)
 t3 = s.target_distances(0, [1], return_labels=labelled)
 rows = s.distances_from_each([0, 1], threads=2)
 M = s.local_distance_matrix(0.1, symmetric=True, format="csc")
-paths, lengths = s.shortest_paths(0, [5], source_first=True)
-p = s.shortest_path(0, 5)
-distance, path = s.geodesic_distance(0, 5)
+lengths, paths = s.distances_and_paths(0, [5], source_first=False)
+p = s.geodesic_path(0, 5)
+distance, path = s.distance_and_path(0, 5)
+samples, sd, sl, sb = s.farthest_point_sampling(4, first_sample=2, return_distances=True, return_labels=True,
+                                                return_bounds=True)
+d3, l3 = s.distances(None, points=[[0.0, 0.0, 0.0]], prior_distances=d2, prior_labels=labels, return_labels=True)
 total: float = distance + float(lengths[0]) + float(p[0, 0]) + float(path[0, 0])
 e = dggvtp.geodesic_distances(V, F, 0, precision=precision, return_labels=labelled)
 g = gdist.compute_gdist(V, F, np.array([0], np.int32), None, None, False, epsilon=1e-4)

@@ -37,9 +37,13 @@ def stub_functions(name):
 
 
 def runtime_signature(function):
-    """the signature on the first line of a pybind11 docstring, as ast arguments"""
-    first = function.__doc__.split("\n")[0]
-    header = first.split(" -> ")[0]
+    """the signature on the first line of a pybind11 docstring (or of a function written in Python,
+    the former spellings), as ast arguments"""
+    if inspect.isfunction(function) and not hasattr(function, "__wrapped__"):
+        header = f"{function.__name__}{inspect.signature(function)}".split(" -> ")[0]
+        header = header.replace("=inf", "=float('inf')")
+    else:
+        header = function.__doc__.split("\n")[0].split(" -> ")[0]
     return ast.parse(f"def {header}: ...").body[0].args
 
 
@@ -54,6 +58,20 @@ def parameters(args):
 
 def same_default(stub, runtime):
     return stub == runtime or stub == "..." or (stub, runtime) in {("0.0", "0.0"), ("'double'", "'double'")}
+
+
+def test_threads_default_to_every_core():
+    # threads=0 (all cores) wherever a function takes threads: the result is the same bits for any number
+    found = 0
+    for name, args in stub_functions("_dggvtp.pyi").items():
+        target = dggvtp._dggvtp
+        for part in name.split("."):
+            target = getattr(target, part)
+        for n, _, default in parameters(runtime_signature(target)):
+            if n == "threads":
+                assert default == "0", (name, default)
+                found += 1
+    assert found >= 10, found
 
 
 @pytest.mark.parametrize("name", sorted(stub_functions("_dggvtp.pyi")))
@@ -86,8 +104,8 @@ def test_geodesic_distances_takes_the_options_of_distances():
 
 def test_signatures_give_real_types():
     for f in (dggvtp.read_mesh, dggvtp.GeodesicSolver.__init__, dggvtp.GeodesicSolver.distances,
-              dggvtp.GeodesicSolver.local_distance_matrix, dggvtp.GeodesicSolver.shortest_paths,
-              dggvtp.GeodesicSolver.target_distances, dggvtp.GeodesicSolver.shortest_path):
+              dggvtp.GeodesicSolver.local_distance_matrix, dggvtp.GeodesicSolver.distances_and_paths,
+              dggvtp.GeodesicSolver.target_distances, dggvtp.GeodesicSolver.geodesic_path):
         first = f.__doc__.split("\n")[0]
         assert ": object" not in first and "-> object" not in first, first
         assert "ArrayLike" in first or "PathLike" in first, first
@@ -100,7 +118,7 @@ V, F = dggvtp.read_mesh("mesh.ply")
 solver = dggvtp.GeodesicSolver(V, F, repair=True)
 d: np.ndarray = solver.distances([0, 1], face_points=([3], [[0.2, 0.3, 0.5]]), epsilon=1e-3)
 d2, labels = solver.distances(0, return_labels=True)
-paths, lengths = solver.shortest_paths(0, targets=[5])
+lengths, paths = solver.distances_and_paths(0, targets=[5])
 n: int = solver.num_vertices + len(paths) + int(lengths[0])
 M = solver.local_distance_matrix(0.1, threads=2)
 e = dggvtp.geodesic_distances(V, F, 0, max_distance=1.0)

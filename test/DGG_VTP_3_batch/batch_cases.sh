@@ -148,6 +148,29 @@ all_sources_and_threads)
   grep -Eq '"threads_per_stage": \{"load": 1, "repair": 1, "prepare": [12], "compute": [12], "write": 1\}' s2.json \
     || fail "stats: threads per stage: $(cat s2.json)"
   ;;
+threads_default_is_every_core)
+  # without --threads: every core (--stats: threads 0; the preparation and the rows on the cores),
+  # the bytes of --threads 1; under mpirun, the ranks of a machine share its cores
+  lion_sources | head -6 > l.txt
+  run "$lion" --sources l.txt --output t1.npy --threads 1 --epsilon 1e-3 --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  run "$lion" --sources l.txt --output t.npy --epsilon 1e-3 --stats s.json --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  cmp -s t1.npy t.npy || fail "the default does not give the bytes of --threads 1"
+  n=$(nproc)
+  grep -q '"threads": 0,' s.json || fail "stats: the default --threads is not 0: $(cat s.json)"
+  grep -Fq "\"prepare\": $n, \"compute\": $n," s.json || fail "stats: the default is not the $n cores: $(cat s.json)"
+  "$batch" --help | grep -A1 -- "--threads T" | grep -q "0 = all cores (the default" || fail "--help does not say the default"
+  if [ "$mpiexec" != none ] && command -v "$mpiexec" >/dev/null 2>&1; then
+    mpi 2 "$lion" --sources l.txt --output m.npy --epsilon 1e-3 --stats m.json --quiet > mpi.log 2>&1 ||
+      fail "mpirun -np 2: $(cat mpi.log)"
+    cmp -s t1.npy m.npy || fail "2 ranks with the default threads: other bytes"
+    share=$((n / 2)); [ "$share" -ge 1 ] || share=1
+    compute=$(grep -o '"compute": [0-9]*' m.json | grep -o '[0-9]*$')
+    [ "$compute" -ge 1 ] && [ "$compute" -le "$share" ] ||
+      fail "2 ranks on one machine of $n cores: $compute threads each, not at most $share: $(cat m.json)"
+  else
+    echo "the default under MPI skipped: no MPI"
+  fi
+  ;;
 mpi_ranks_and_threads)
   # R = 1, 2, 3 ranks x 1, 2 threads: the bytes of one process, which are dggvtp's rows
   need_mpi
@@ -283,6 +306,16 @@ farthest_point_sampling)
   done
   run "$lion" --sources fps:6 --output fps2.npy --threads 2 --quiet; [ "$rc" -eq 0 ] || fail "$err"
   cmp -s fps.npy fps2.npy || fail "fps on 2 threads: other bytes"
+  # --first-sample N: the samples of dggvtp --fps K --first-sample N (the library's first_sample)
+  run "$lion" --sources fps:6 --first-sample 17 --epsilon 1e-2 --output f17.npy --sources-output c17.txt --quiet
+  [ "$rc" -eq 0 ] || fail "$err"
+  "$dggvtp" "$lion" --fps 6 --first-sample 17 --epsilon 1e-2 --quiet > d17.txt || fail "dggvtp --fps --first-sample"
+  cmp -s c17.txt d17.txt || fail "--first-sample 17: not dggvtp's samples: $(cat c17.txt) / $(cat d17.txt)"
+  [ "$(head -1 c17.txt)" = 17 ] || fail "fps does not start at --first-sample 17"
+  run "$lion" --sources fps:6 --first-sample 0 --output f0.npy --quiet; [ "$rc" -eq 0 ] || fail "$err"
+  cmp -s fps.npy f0.npy || fail "--first-sample 0 is not the default"
+  run "$lion" --sources chosen.txt --first-sample 3 --output o.npy; expect_usage_error
+  run "$lion" --sources fps:6 --first-sample 8356 --output out.npy; expect_input_error "--first-sample 8356 is out of range"
   # the sources chosen first: a local distance matrix of them, and the sampling timed
   run "$lion" --sources fps:6 --output fps.npz --max-distance 0.05 --sources-output chosen_local.txt --stats fs.json \
     --quiet; [ "$rc" -eq 0 ] || fail "$err"
@@ -343,6 +376,11 @@ exit_code_table)
 1 MESH --sources fps:-1 --output o.npy
 1 MESH --sources fps:0 --output o.npy
 2 MESH --sources fps:21 --output o.npy
+0 MESH --sources fps:2 --first-sample 5 --output o.npy
+1 MESH --sources s.txt --first-sample 5 --output o.npy
+1 MESH --sources fps:2 --first-sample -1 --output o.npy
+1 MESH --sources fps:2 --first-sample --output o.npy
+2 MESH --sources fps:2 --first-sample 20 --output o.npy
 2 MESH --sources W/none.txt --output o.npy
 2 MESH --sources range.txt --output o.npy
 2 MESH --sources negative.txt --output o.npy

@@ -26,7 +26,7 @@ run() {
     case ${args[i]} in
       --output|-o|--stats|--labels|--paths|--isolines-output|--error-bounds) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
       --output=*|--stats=*|--labels=*|--paths=*|--isolines-output=*|--error-bounds=*) outputs+=("${args[i]#*=}") ;;
-      --source|-s|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads|--isolines|--isolines-at|--fps) i=$((i + 1)) ;;
+      --source|-s|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads|--isolines|--isolines-at|--fps|--first-sample) i=$((i + 1)) ;;
       --source-point|--target-point|--path-to-point) i=$((i + 3)) ;;
       --repair) nan_allowed=true ;;   # a vertex the repairs removed is nan: the cases check which
       -*) ;;
@@ -231,6 +231,22 @@ case $case in
         cmp -s "$work/d1.txt" "$work/d$t.txt" || fail "$mode: --threads $t differs from --threads 1"
       done
     done ;;
+  threads_default_is_every_core)
+    # without --threads: every core (--stats: threads 0, the cores for the preparation and the
+    # propagation), the bytes of --threads 1; the help says so
+    for mode in --exact "--epsilon 1e-2"; do
+      run "$meshes/lion_head.ply" --quiet $mode --threads 1 --output "$work/d1.txt" --stats "$work/s1.json"; expect_rc 0
+      run "$meshes/lion_head.ply" --quiet $mode --output "$work/d.txt" --stats "$work/s.json"; expect_rc 0
+      cmp -s "$work/d1.txt" "$work/d.txt" || fail "$mode: the default differs from --threads 1"
+      grep -q '"threads": 0,' "$work/s.json" || fail "stats: the default --threads is not 0: $(cat "$work/s.json")"
+      n=$(nproc)
+      grep -Fq "\"prepare\": $n, \"locate\": 1, \"propagate\": $n," "$work/s.json" ||
+        fail "stats: the default runs on other than the $n cores: $(cat "$work/s.json")"
+      grep -Fq '"prepare": 1, "locate": 1, "propagate": 1,' "$work/s1.json" || fail "stats: --threads 1: $(cat "$work/s1.json")"
+    done
+    run --help; expect_rc 0
+    printf '%s\n' "$out" | grep -A1 -- "--threads T" | grep -q "0 = all cores" &&
+      printf '%s\n' "$out" | grep -A2 -- "--threads T" | grep -q "(the default)" || fail "--help does not say the default" ;;
   threads_on_a_mesh_with_copies)
     # lion_head with 1,500 fins glued on its edges: the loader splits their ends into copies, which
     # land in other patches than the vertices they copy; 10 runs on 2 and on 8 threads (fewer
@@ -250,9 +266,9 @@ case $case in
     # the samples on stdout, the field and the labels as text and in a PLY file; exact: each
     # sample is the vertex farthest from those before (the greedy sequence: its distance to them
     # is the largest in the field of those before, checked with --fps K-1)
-    run "$spot" --quiet --fps 6 --source 3 --output "$work/d.txt" --labels "$work/l.txt"; expect_rc 0
+    run "$spot" --quiet --fps 6 --first-sample 3 --output "$work/d.txt" --labels "$work/l.txt"; expect_rc 0
     [ "$(printf '%s\n' "$out" | wc -l)" -eq 6 ] || fail "not 6 samples: $out"
-    [ "$(printf '%s\n' "$out" | head -1)" = 3 ] || fail "the first sample is not --source 3"
+    [ "$(printf '%s\n' "$out" | head -1)" = 3 ] || fail "the first sample is not --first-sample 3"
     [ "$(printf '%s\n' "$out" | sort -u | wc -l)" -eq 6 ] || fail "a sample twice: $out"
     k=0
     for v in $out; do
@@ -260,15 +276,28 @@ case $case in
       [ "$(sed -n "$((v + 1))p" "$work/l.txt")" = $k ] || fail "sample $v is not labelled $k"
       k=$((k + 1))
     done
-    run "$spot" --quiet --fps 5 --source 3 --output "$work/d5.txt"; expect_rc 0
+    run "$spot" --quiet --fps 5 --first-sample 3 --output "$work/d5.txt"; expect_rc 0
     sixth=$(awk 'NR == 1 || $1 > m { m = $1; v = NR - 1 } END { print v }' "$work/d5.txt")
-    run "$spot" --quiet --fps 6 --source 3; expect_rc 0
+    run "$spot" --quiet --fps 6 --first-sample 3; expect_rc 0
     [ "$(printf '%s\n' "$out" | sed -n 6p)" = "$sixth" ] ||
       fail "the sixth sample is not the farthest vertex of the field of five ($sixth)"
-    run "$spot" --quiet --fps 6 --source 3 --epsilon 1e-2 --output "$work/f.ply" --labels "$work/fl.txt" \
+    run "$spot" --quiet --fps 6 --first-sample 3 --epsilon 1e-2 --output "$work/f.ply" --labels "$work/fl.txt" \
       --error-bounds "$work/fe.txt"; expect_rc 0
-    run "$spot" --quiet --fps 6 --source 3 --epsilon 1e-2 --output "$work/f.txt" --threads 2; expect_rc 0
+    run "$spot" --quiet --fps 6 --first-sample 3 --epsilon 1e-2 --output "$work/f.txt" --threads 2; expect_rc 0
     check_field ply "$work/f.ply" "$spot" "$work/f.txt" "$work/fl.txt"
+    # --source N, the former spelling of --first-sample N: the same samples, and a warning
+    run "$spot" --fps 6 --first-sample 3; expect_rc 0
+    samples=$out
+    run "$spot" --fps 6 --source 3; expect_rc 0
+    [ "$out" = "$samples" ] || fail "--source 3 does not give the samples of --first-sample 3"
+    [[ "$err" == *"warning: --source N with --fps is deprecated: write --first-sample N"* ]] || fail "no warning: $err"
+    run "$spot" --fps 6 --source 3 --quiet; expect_rc 0
+    [ -z "$err" ] || fail "--quiet leaves: $err"
+    run "$spot" --fps 6; expect_rc 0
+    [ "$(printf '%s\n' "$out" | head -1)" = 0 ] || fail "the first sample is not vertex 0 by default"
+    run "$spot" --first-sample 3; expect_usage_error
+    run "$spot" --fps 3 --first-sample 3 --source 3; expect_usage_error
+    rm -f "$work/d.txt"; run "$spot" --fps 3 --first-sample 2930; expect_input_error
     run "$spot" --fps 0; expect_usage_error
     run "$spot" --fps 3 --target 5; expect_usage_error
     run "$spot" --fps 3 --source 1 --source 2; expect_usage_error
@@ -1013,6 +1042,13 @@ PY
 1 MESH --epsilon inf
 1 MESH --epsilon abc
 1 MESH --epsilon
+0 MESH --fps 3
+0 MESH --fps 3 --first-sample 5
+1 MESH --first-sample 5
+1 MESH --fps 3 --first-sample -1
+1 MESH --fps 3 --first-sample
+1 MESH --fps 3 --first-sample 5 --source 5
+2 MESH --fps 3 --first-sample 143
 0 MESH --precision float
 1 MESH --precision half
 1 MESH --precision

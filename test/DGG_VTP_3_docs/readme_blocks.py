@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""Every code block of README.md, exercised: the front door cannot rot.
+"""Every code block of a Markdown file (README.md, doc/cli.md, doc/python.md), exercised: the front
+door and the references it sends readers to cannot rot.
 
-Extracts the fenced blocks of README.md, prints their count by language, then
+Extracts the fenced blocks of the file, prints their count by language, then
 - python: runs the blocks in order, in one namespace (a later block may use an earlier one's names),
   with PYTHONPATH=$DGGVTP_PYTHONPATH (e.g. build/python), in a temporary directory where data/ is
   $DGGVTP_DATA/.. (data/meshes of the repository) and matplotlib draws off screen;
@@ -10,12 +11,13 @@ Extracts the fenced blocks of README.md, prints their count by language, then
   SKIP_COMMANDS are not run, and each is printed with its reason;
 - cpp: each block must be a whole program: g++ -std=gnu++17 -fsyntax-only -I include (and CGAL's,
   Boost's and Eigen's system include directories);
-- text, cmake and blocks without a language are not programs: counted, not run (SKIP_LANGUAGES).
+- text, console, cmake and blocks without a language are not programs to run here: counted, not
+  run (SKIP_LANGUAGES).
 Exit 0 when every block that is run passes, 1 otherwise. Without DGGVTP_PYTHONPATH, the Python
 blocks are skipped (said so); without DGGVTP_BIN, the sh blocks are.
 
 usage: DGGVTP_PYTHONPATH=build/python DGGVTP_BIN=build/bin DGGVTP_DATA=data/meshes \\
-       /usr/bin/python3 test/DGG_VTP_3_docs/readme_blocks.py [README.md]
+       /usr/bin/python3 test/DGG_VTP_3_docs/readme_blocks.py [FILE.md, README.md by default]
 """
 import collections
 import os
@@ -36,8 +38,9 @@ SKIP_COMMANDS = {
         "builds the program (minutes); the test runs the one already built in $DGGVTP_BIN",
 }
 SKIP_LANGUAGES = {
-    "": "no language: the two commands of 'Two commands' (they install Debian packages and build everything; CI runs them)",
-    "text": "a usage synopsis or a cluster session, not a command to run here",
+    "": "no language: commands that install Debian packages or build (the two commands of README.md; CI runs them)",
+    "text": "a usage synopsis, not a command",
+    "console": "a terminal session on a cluster, not a command to run here",
     "cmake": "a fragment of a CMakeLists.txt (the CTests DGG_VTP_3.cmake_package_* build a consumer)",
 }
 
@@ -63,6 +66,7 @@ def commands(body):
 
 def main():
     readme = Path(sys.argv[1]) if len(sys.argv) > 1 else ROOT / "README.md"
+    name = readme.resolve().relative_to(ROOT).as_posix() if readme.resolve().is_relative_to(ROOT) else readme.name
     found = blocks(readme.read_text())
     counts = collections.Counter(lang or "(none)" for _, lang, _ in found)
     print(f"{readme}: {len(found)} fenced blocks: " + ", ".join(f"{n} {l}" for l, n in sorted(counts.items())))
@@ -81,7 +85,7 @@ def main():
             env["PATH"] = str(Path(bindir).resolve()) + os.pathsep + env["PATH"]
         python_program = []
         for line, lang, body in found:
-            where = f"README.md:{line} ({lang or 'no language'})"
+            where = f"{name}:{line} ({lang or 'no language'})"
             if lang in SKIP_LANGUAGES:
                 print(f"skip {where}: {SKIP_LANGUAGES[lang]}")
             elif lang in ("sh", "bash"):

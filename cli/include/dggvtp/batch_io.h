@@ -22,6 +22,7 @@
 
 #include <dirent.h>
 #include <fcntl.h>
+#include <sched.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/types.h>
@@ -74,6 +75,10 @@ public:
       m_mpi = true;
       MPI_Comm_rank(MPI_COMM_WORLD, &m_rank);
       MPI_Comm_size(MPI_COMM_WORLD, &m_size);
+      MPI_Comm node; // the processes of the run on this machine
+      MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, m_rank, MPI_INFO_NULL, &node);
+      MPI_Comm_size(node, &m_size_on_node);
+      MPI_Comm_free(&node);
     }
 #else
     (void)argc;
@@ -92,6 +97,8 @@ public:
 
   int rank() const { return m_rank; }
   int size() const { return m_size; }
+  // the number of processes of the run on this machine, this one included
+  int size_on_this_node() const { return m_size_on_node; }
   bool uses_mpi() const { return m_mpi; }
   // whether several threads of this process may call MPI, one at a time
   bool allows_threads() const
@@ -185,8 +192,28 @@ private:
 
   bool m_mpi = false;        // MPI initialised by this object
   int m_rank = 0, m_size = 1;
+  int m_size_on_node = 1;    // processes of the run on this machine
   int m_thread_level = 0;    // what MPI_Init_thread provided
 };
+
+// The threads of a process for --threads `asked`: `asked` itself, but for 0 (all cores) under
+// mpirun with several processes on this machine, where each takes its share of the cores (or, if
+// the launcher bound it to fewer cores, those), so that the processes of a node do not run more
+// threads than it has cores. The rows are the same bytes for any number.
+inline long threads_of_process(long asked, const Communicator& comm)
+{
+  const int here = comm.size_on_this_node();
+  if(asked != 0 || here <= 1)
+    return asked;
+  const long cores = long((std::max)(1u, std::thread::hardware_concurrency()));
+  long mine = cores;
+  cpu_set_t set;
+  if(sched_getaffinity(0, sizeof set, &set) == 0)
+    mine = CPU_COUNT(&set);
+  if(mine < cores) // bound by the launcher
+    return (std::max)(1L, mine);
+  return (std::max)(1L, cores / here);
+}
 
 // ---------------------------------------------------------------------------------------------
 // Row_file

@@ -82,9 +82,9 @@ struct Face_index_map_of
  *         without square roots (the `FT` of `CGAL::Exact_predicates_exact_constructions_kernel`)
  *         is refused at compile time: use `CGAL::Exact_predicates_exact_constructions_kernel_with_sqrt`
  *         or an inexact kernel. The propagation runs in `FT`, but
- *         at least in `double`: in float, windows that tie within rounding get trimmed in the
- *         wrong order, and the cones lost that way left vertices unreachable (float is kept for
- *         input and output).
+ *         at least in `double`: in float, windows that tie within rounding would be trimmed in
+ *         the wrong order, and the cones lost that way would leave vertices unreachable (float is
+ *         kept for input and output).
  * \tparam VertexIndexMap the type of the vertex index map given to the constructor, by default the
  *         one `CGAL::get_initialized_vertex_index_map()` returns for the mesh.
  * \tparam FaceIndexMap the type of the face index map given to the constructor, by default the

@@ -96,10 +96,25 @@ CGAL_DGG_VTP_3_NAMED_PARAMETER(copy_of)
 /// `CGAL::Parallel_if_available_tag` or `CGAL::Sequential_tag`, as a value
 /// (`concurrency_tag(CGAL::Parallel_tag())`). CGAL names it so from 6.0 on.
 CGAL_DGG_VTP_3_NAMED_PARAMETER(concurrency_tag)
+/// A readable vertex property map: the field of earlier sources (per vertex its distance to
+/// them, `+infinity` where unreached, as a query of the same solver at the same accuracy or less
+/// gave it) that the sources of the query are added to. The result is the field of all the
+/// sources, within the contract, and the propagation goes only where the new sources are nearer
+/// (see the manual, "Adding sources to a field"). Not with `targets` and `max_distance`.
 CGAL_DGG_VTP_3_NAMED_PARAMETER(prior_distance_map)
+/// A readable vertex property map: with `prior_distance_map`, the number of each vertex's nearest
+/// earlier source (`std::size_t(-1)` where unreached); the new sources are numbered from one
+/// beyond the largest. Needed for `nearest_source_map` with a prior field.
 CGAL_DGG_VTP_3_NAMED_PARAMETER(prior_nearest_source_map)
+/// A readable vertex property map: with `prior_distance_map`, the certified lower bounds of the
+/// prior field (as `lower_bound_map` gave them), kept where no new source is nearer; by default
+/// the prior distance divided by 1 + accuracy, which the contract makes a lower bound.
 CGAL_DGG_VTP_3_NAMED_PARAMETER(prior_lower_bound_map)
+/// For `farthest_point_sampling()`: the first sample, a `vertex_descriptor` (by default the vertex
+/// of index 0). The programs call it `--first-sample`, the Python module `first_sample`.
 CGAL_DGG_VTP_3_NAMED_PARAMETER(first_sample)
+/// For `farthest_point_sampling()`: a writable vertex property map that receives, per vertex, its
+/// distance to the nearest sample (the field of the samples, within the contract).
 CGAL_DGG_VTP_3_NAMED_PARAMETER(distance_map)
 
 #undef CGAL_DGG_VTP_3_NAMED_PARAMETER

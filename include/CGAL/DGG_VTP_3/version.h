@@ -16,8 +16,8 @@
 
 /// \file version.h
 /// The version of the package, as CGAL gives its own in `<CGAL/version.h>`. This is its one
-/// place: CMakeLists.txt reads the three numbers for `project()` and the CMake package's version
-/// file, python/setup.py for the Python package's metadata; the programs' `--version` and
+/// place: the project's CMake reads the three numbers for `project()` and the CMake package's
+/// version file, the Python package's setup for its metadata; the programs' `--version` and
 /// `dggvtp.__version__` print `DGG_VTP_3_VERSION_STR`.
 
 #define DGG_VTP_3_VERSION_MAJOR 0
