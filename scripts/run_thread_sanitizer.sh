@@ -9,7 +9,10 @@
 # TSan sees the synchronisation of code it instruments only: TBB's scheduler, in Debian's
 # libtbb.so, would hide the start and end of every parallel loop, and each would be reported as
 # a race. So oneTBB is built from Debian's source package of the installed version, with
-# -fsanitize=thread (build-tsan/onetbb, half a minute), and put before Debian's at run time.
+# -fsanitize=thread (build-tsan/onetbb, a minute), and put before Debian's at run time. Its
+# allocator too: libtbb opens libtbbmalloc.so.2 by name and takes its memory from it, and
+# Debian's, whose free lists TSan cannot see, made an arena freed by a worker and the next arena
+# the main thread built at the same address look like a race (CI, concurrency test, 8 threads).
 # Suppressions (scripts/tsan.supp) cover only what lies outside the project, each with its reason.
 # Assertions are on (no -DNDEBUG): the scheduler checks that no message is left between patches.
 # dggvtp-batch is built without MPI (its MPI cases report themselves skipped): Open MPI's ranks
@@ -32,7 +35,7 @@ mkdir -p build-tsan
 # oneTBB, the installed version, from Debian's sources (apt-get source needs a deb-src entry)
 tbb_version=$(dpkg-query -W -f '${Version}' libtbb-dev)
 tbb_lib=$root/build-tsan/onetbb/lib
-if [ ! -e "$tbb_lib/libtbb.so.12" ] || [ "$(cat build-tsan/onetbb/version 2>/dev/null)" != "$tbb_version" ]; then
+if [ ! -e "$tbb_lib/libtbb.so.12" ] || [ ! -e "$tbb_lib/libtbbmalloc.so.2" ] || [ "$(cat build-tsan/onetbb/version 2>/dev/null)" != "$tbb_version" ]; then
   rm -rf build-tsan/onetbb && mkdir -p build-tsan/onetbb/src
   sources=/etc/apt/sources.list.d/dggvtp-deb-src.sources
   if ! apt-get source --print-uris -qq onetbb="$tbb_version" >/dev/null 2>&1; then
@@ -49,9 +52,10 @@ if [ ! -e "$tbb_lib/libtbb.so.12" ] || [ "$(cat build-tsan/onetbb/version 2>/dev
   tbb_source=$(find build-tsan/onetbb/src -maxdepth 1 -type d -name 'onetbb-*' | head -n 1)
   cmake -S "$tbb_source" -B build-tsan/onetbb/build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=g++ \
         -DCMAKE_CXX_FLAGS="-O1 -g1" -DTBB_TEST=OFF -DTBB_EXAMPLES=OFF -DTBB_STRICT=OFF -DTBB_SANITIZE=thread >/dev/null
-  cmake --build build-tsan/onetbb/build -j2 --target tbb >/dev/null
+  cmake --build build-tsan/onetbb/build -j2 --target tbb tbbmalloc >/dev/null
   mkdir -p "$tbb_lib"
-  cp -P "$(dirname "$(find build-tsan/onetbb/build -name 'libtbb.so.12' | head -n 1)")"/libtbb.so* "$tbb_lib"/
+  built=$(dirname "$(find build-tsan/onetbb/build -name 'libtbb.so.12' | head -n 1)")
+  cp -P "$built"/libtbb.so* "$built"/libtbbmalloc.so* "$tbb_lib"/
   echo "$tbb_version" > build-tsan/onetbb/version
 fi
 
