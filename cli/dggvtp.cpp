@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -70,7 +71,15 @@ Geodesic distances on the surface of a triangle mesh, from the nearest of one or
                          output (one line per path in the order given, after the targets' lines);
                          repeatable; the propagation stops as for --target
   --paths FILE           write the paths of --path-to into an OBJ file: per path a comment, its
-                         points as v lines from the target to the source, and one l line
+                         points as v lines from the target to the source, and one l line; with
+                         --pairs, one path per pair, from its source to its target
+  --pairs FILE           the distance of each pair of FILE, a source vertex and a target vertex
+                         per line (0-based, as --source N; '#' lines and blank lines skipped),
+                         on standard output one line per pair in the order given, printed as
+                         --target prints; each pair its own propagation, stopped once its target
+                         is final, the pairs in parallel (--threads), the same bits as
+                         --source S --target T; not with --source, --target, --path-to (put
+                         those pairs in FILE), --fps or the per-vertex outputs
   --fps K                farthest-point sampling of K vertices: the --first-sample vertex,
                          then each time the vertex farthest from those chosen (the smallest
                          index on ties; unreachable vertices first; with --epsilon E, one within
@@ -216,6 +225,10 @@ struct Options : dggvtp::Propagation_options
   std::string output_format; // empty: by each file's extension
   std::string paths;
   std::string stats;
+  std::string pairs_file;   // --pairs FILE
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;       // its pairs (source, target), as read
+  std::vector<std::size_t> pair_lines;                          // per pair: its line in the file (1-based)
+  std::vector<std::pair<std::size_t, std::size_t>> pair_places; // the pairs on the vertices --repair kept
   std::size_t fps = 0; // --fps K: the number of samples (0: none)
   std::optional<std::size_t> first_sample; // --first-sample N
   bool source_as_first_sample = false;      // --fps with --source N: the former spelling of --first-sample
@@ -226,8 +239,9 @@ struct Options : dggvtp::Propagation_options
   bool repair = false;
   bool progress = false; // the progress line from the start, on any stderr
 
-  // targets and paths end the propagation early
-  bool stops_early() const { return !targets.empty() || !path_targets.empty(); }
+  bool has_pairs() const { return !pairs_file.empty(); }
+  // targets, paths and pairs end the propagation early
+  bool stops_early() const { return !targets.empty() || !path_targets.empty() || has_pairs(); }
   bool has_points() const { return dggvtp::has_points({&sources, &targets, &path_targets}); }
   dggvtp::Repair_option repair_option() const { return {"--repair", repair}; }
 };
@@ -240,7 +254,7 @@ Options parse_options(int argc, char** argv)
     return option == "--source" ? options.sources : option == "--target" ? options.targets : options.path_targets;
   };
   dggvtp::Single_value_options single_value{"--fps", "--first-sample", "--max-distance", "--epsilon", "--precision", "--threads", "--output", "--error-bounds",
-                                            "--labels", "--output-format", "--paths", "--stats", "--isolines",
+                                            "--labels", "--output-format", "--paths", "--pairs", "--stats", "--isolines",
                                             "--isolines-at", "--isolines-output"};
   dggvtp::Argument_reader words(argc, argv, {{"-h", "--help"}, {"-o", "--output"}, {"-s", "--source"}}, usage_text);
   while(words.next())
@@ -303,6 +317,12 @@ Options parse_options(int argc, char** argv)
       if(file.empty())
         throw Usage_error(arg + " needs a file name ('-' for standard output)");
     }
+    else if(arg == "--pairs")
+    {
+      options.pairs_file = value();
+      if(options.pairs_file.empty())
+        throw Usage_error("--pairs needs a file name");
+    }
     else if(arg == "--fps")
     {
       options.fps = parse_number<std::size_t>(arg, value());
@@ -347,6 +367,18 @@ Options parse_options(int argc, char** argv)
   if(options.mesh.empty())
     throw Usage_error("no MESH given");
   options.check();
+  if(options.has_pairs())
+  {
+    if(!options.sources.empty() || !options.targets.empty() || !options.path_targets.empty())
+      throw Usage_error("--pairs gives each query its source and target: not with --source, --target or --path-to "
+                        "(or their -point forms); put those pairs in the --pairs file, or run them without --pairs");
+    if(options.fps > 0 || options.first_sample)
+      throw Usage_error("--pairs and --fps are separate runs");
+    if(!(options.output.empty() && options.labels.empty() && options.error_bounds.empty() &&
+         options.isolines_output.empty()))
+      throw Usage_error("--pairs stops each propagation once its target is final: --output, --labels, "
+                        "--error-bounds and isolines need another run (with --source)");
+  }
   if(options.first_sample && options.fps == 0)
     throw Usage_error("--first-sample is the first sample of --fps: give --fps K");
   if(options.fps > 0 && (options.sources.size() > 1 || options.has_points() || options.stops_early() ||
@@ -368,7 +400,7 @@ Options parse_options(int argc, char** argv)
   if(options.fps > 0 && (options.output == "-" || options.labels == "-" || options.error_bounds == "-" ||
                          options.isolines_output == "-"))
     throw Usage_error("--fps prints the samples on standard output: give the other outputs a file");
-  if(options.sources.empty())
+  if(options.sources.empty() && !options.has_pairs())
     options.sources.push_back(Place());
   if(options.stops_early() && !(options.output.empty() && options.labels.empty() && options.error_bounds.empty()))
     throw Usage_error("--target and --path-to stop the propagation before every vertex is final: "
@@ -380,11 +412,11 @@ Options parse_options(int argc, char** argv)
   if(options.stops_early() && !options.isolines_output.empty())
     throw Usage_error("--target and --path-to stop the propagation before every vertex is final: "
                       "isolines need another run");
-  if(!options.paths.empty() && options.path_targets.empty())
-    throw Usage_error("--paths needs --path-to or --path-to-point");
+  if(!options.paths.empty() && options.path_targets.empty() && !options.has_pairs())
+    throw Usage_error("--paths needs --path-to, --path-to-point or --pairs");
   if(int(options.output == "-") + int(options.labels == "-") + int(options.paths == "-") + int(options.isolines_output == "-") +
        int(options.error_bounds == "-") + int(options.stops_early()) > 1)
-    throw Usage_error("only one output may go to standard output (the targets' and paths' lines are one)");
+    throw Usage_error("only one output may go to standard output (the targets', paths' and pairs' lines are one)");
   return options;
 }
 
@@ -484,7 +516,10 @@ struct Run
   std::vector<long long> labels;        // per file vertex, with --labels: its nearest source's option, or -1
   std::vector<double> target_distances; // per --target
   std::vector<double> path_lengths;     // per --path-to
-  std::vector<Polyline> paths;          // per --path-to: from the target to the source; empty if unreached
+  std::vector<Polyline> paths;          // per --path-to: from the target to the source; empty if unreached;
+                                        // with --pairs, per pair, from the source to the target
+  std::vector<double> pair_distances;   // per pair of --pairs
+  std::vector<double> pair_lengths;     // per pair, with --paths: the length of its path
   std::vector<std::size_t> samples;     // with --fps: the file vertices chosen, in order
   std::vector<std::string> warnings;    // for standard error, unless --quiet
 };
@@ -632,6 +667,121 @@ void run_query(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& o
   }
 }
 
+// "--pairs 'FILE' line N", for messages about a pair
+std::string pair_line_text(const Options& options, std::size_t k)
+{
+  return "--pairs '" + options.pairs_file + "' line " + std::to_string(options.pair_lines[k]);
+}
+
+// --pairs: per pair, the distance from its source to its target (and, with --paths, the path),
+// each pair a propagation of its own that stops once its target is final, the pairs in parallel
+// under `Tag` (the library's compute_pair_distances(): the same bits on any number of threads)
+template <class Tag, class Solver>
+void run_pairs(dggvtp::Loaded_soup& soup, const Solver& solver, const Options& options, Run& run)
+{
+  using FT = typename Solver::FT;
+  using Path_point = typename CGAL::DGG_VTP_3::Shortest_path_tree<Solver>::Path_point;
+  namespace DP = CGAL::DGG_VTP_3::parameters;
+  // per file vertex: its solver vertex, and how many copies the input policy made of it
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> solver_vertex(soup.file_vertices, none), copies(soup.file_vertices, 0);
+  for(std::size_t v = 0; v < soup.file_vertex_of.size(); ++v)
+    if(copies[soup.file_vertex_of[v]]++ == 0)
+      solver_vertex[soup.file_vertex_of[v]] = v;
+  // a pair is one source and one target: a vertex split into copies (several sheets at one point)
+  // is several sources, which --source takes and a pair does not
+  const auto at = [&](std::size_t v, std::size_t k) {
+    if(copies[v] == 1)
+      return solver_vertex[v];
+    if(copies[v] == 0)
+      throw dggvtp::Input_error(pair_line_text(options, k) + ": vertex " + std::to_string(v) + " is in no face");
+    throw dggvtp::Input_error(pair_line_text(options, k) + ": vertex " + std::to_string(v) + " was split into " +
+                              std::to_string(copies[v]) + " copies by the input policy (non-manifold edges or "
+                              "orientation): a pair takes one vertex; use --source " + std::to_string(v) +
+                              " or --target " + std::to_string(v) + " for it");
+  };
+  std::vector<bool> in_a_face(soup.file_vertex_of.size(), false);
+  for(const Triangle& t : soup.triangles)
+    for(std::uint32_t v : t)
+      in_a_face[v] = true;
+
+  // paths are drawn on the soup's points and triangles; the rest of the soup goes before the propagation
+  const bool with_paths = !options.paths.empty();
+  std::vector<Point_3> points;
+  std::vector<Triangle> triangles;
+  if(with_paths)
+  {
+    points.swap(soup.points);
+    triangles.swap(soup.triangles);
+  }
+  dggvtp::release_soup(soup);
+
+  const std::size_t n = options.pair_places.size();
+  run.pair_distances.assign(n, std::numeric_limits<double>::infinity());
+  if(with_paths)
+  {
+    run.paths.assign(n, Polyline());
+    run.pair_lengths.assign(n, std::numeric_limits<double>::infinity());
+  }
+  // The pairs for the library, and their numbers among all. A pair at a vertex no face uses is
+  // answered here, as --source and --target answer it: 0 from the vertex to itself (its path that
+  // one point), unreached otherwise; the library's path would start on a face of the vertex.
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  std::vector<std::size_t> asked;
+  pairs.reserve(n);
+  asked.reserve(n);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const std::size_t s = at(options.pair_places[k].first, k), t = at(options.pair_places[k].second, k);
+    if(in_a_face[s] && in_a_face[t])
+    {
+      pairs.emplace_back(s, t);
+      asked.push_back(k);
+    }
+    else if(s == t)
+    {
+      run.pair_distances[k] = 0.;
+      if(with_paths)
+      {
+        run.paths[k].push_back({double(points[s][0]), double(points[s][1]), double(points[s][2])});
+        run.pair_lengths[k] = 0.;
+      }
+    }
+  }
+  // each pair writes its own entries: no two threads write the same
+  const auto np = DP::max_distance(options.max_distance).accuracy(options.epsilon);
+  const Clock::time_point t1 = Clock::now();
+  try
+  {
+    if(with_paths)
+      solver.template compute_pair_distances<Tag>(
+        pairs,
+        [&](std::size_t i, FT d, FT, const std::vector<Path_point>& path) {
+          const std::size_t k = asked[i];
+          run.pair_distances[k] = double(d);
+          if(std::isinf(run.pair_distances[k])) // unreached, or beyond --max-distance: no points
+            return;
+          auto [line, length] = dggvtp::polyline_of(path, points, triangles);
+          run.paths[k] = std::move(line);
+          run.pair_lengths[k] = length;
+        },
+        np);
+    else
+      solver.template compute_pair_distances<Tag>(
+        pairs, [&](std::size_t i, FT d, FT) { run.pair_distances[asked[i]] = double(d); }, np);
+  }
+  catch(const std::invalid_argument& e) // "pair K: ...": the pair's line
+  {
+    std::size_t i = 0;
+    const std::string what = e.what();
+    const auto [end, error] = std::from_chars(what.data() + (std::min)(std::size_t(5), what.size()), what.data() + what.size(), i);
+    if(what.compare(0, 5, "pair ") == 0 && error == std::errc() && i < asked.size() && *end == ':')
+      throw std::invalid_argument(pair_line_text(options, asked[i]) + std::string(end));
+    throw;
+  }
+  run.seconds_propagate = seconds_since(t1);
+}
+
 // The solver is built from the soup; vertices are sources and targets as vertices unless a point
 // is given. The preparation and the propagation run as `Tag` says (with_threads()); the solver and
 // the distances are the same bit for bit on any number of threads (and without TBB).
@@ -646,7 +796,9 @@ Run compute(dggvtp::Loaded_soup& soup, const Options& options, Tag tag)
   run.seconds_make_mesh = dggvtp::make_solver<Tag>(soup, solver);
   run.seconds_prepare = seconds_since(t0) - run.seconds_make_mesh;
   run.faces = soup.triangles.size();
-  if(options.has_points())
+  if(options.has_pairs())
+    run_pairs<Tag>(soup, *solver, options, run);
+  else if(options.has_points())
     run_query<typename Solver::Face_location, Tag>(soup, *solver, options, run);
   else
     run_query<std::size_t, Tag>(soup, *solver, options, run);
@@ -756,13 +908,23 @@ std::string place_text(const Place& p)
 void write_paths(const Run& run, const Options& options)
 {
   Output_file file(options.paths);
-  std::fprintf(file.get(), "# dggvtp: shortest paths on %s, from each target back to its nearest source\n",
-               options.mesh.c_str());
+  if(options.has_pairs())
+    std::fprintf(file.get(), "# dggvtp: shortest paths on %s, from the source to the target of each pair of %s\n",
+                 options.mesh.c_str(), options.pairs_file.c_str());
+  else
+    std::fprintf(file.get(), "# dggvtp: shortest paths on %s, from each target back to its nearest source\n",
+                 options.mesh.c_str());
   std::size_t written = 0;
   for(std::size_t k = 0; k < run.paths.size(); ++k)
   {
-    std::fprintf(file.get(), "# path %zu: %s, length %s%s\n", k, place_text(options.path_targets[k]).c_str(),
-                 number_text(run.path_lengths[k]).c_str(), run.paths[k].empty() ? " (unreached)" : "");
+    if(options.has_pairs())
+      std::fprintf(file.get(), "# path %zu: vertex %zu to vertex %zu (line %zu), distance %s, length %s%s\n", k,
+                   options.pairs[k].first, options.pairs[k].second, options.pair_lines[k],
+                   number_text(run.pair_distances[k]).c_str(), number_text(run.pair_lengths[k]).c_str(),
+                   run.paths[k].empty() ? " (unreached)" : "");
+    else
+      std::fprintf(file.get(), "# path %zu: %s, length %s%s\n", k, place_text(options.path_targets[k]).c_str(),
+                   number_text(run.path_lengths[k]).c_str(), run.paths[k].empty() ? " (unreached)" : "");
     for(const auto& x : run.paths[k])
     {
       char line[96];
@@ -834,10 +996,85 @@ std::string unreachable_warning(const Run& run, const Options& options, std::siz
 {
   if(std::isfinite(options.max_distance))
     return std::string();
+  if(options.has_pairs())
+    return dggvtp::unreachable_warning(dggvtp::count_infinite(run.pair_distances), run.pair_distances.size(),
+                                       "pairs' targets");
   if(options.stops_early())
     return dggvtp::unreachable_warning(dggvtp::count_infinite(run.target_distances) + dggvtp::count_infinite(run.path_lengths),
                                        run.target_distances.size() + run.path_lengths.size(), "targets and paths");
   return dggvtp::unreachable_warning(dggvtp::count_infinite(run.distances), file_vertices, "vertices");
+}
+
+// A line of a --pairs file as a message shows it: at most 40 characters, '?' for what does not print
+std::string shown_line(const std::string& line)
+{
+  std::string out;
+  for(char c : line.substr(0, 40))
+    out += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+  return line.size() > 40 ? out + "..." : out;
+}
+
+// Reads the pairs of --pairs into `options` (pairs, pair_lines): per line two vertex indices,
+// digits only, separated by whitespace; lines that start with '#' (after any whitespace) and blank
+// lines skipped. An unreadable file or a line that is not two indices is an Input_error naming
+// the file and the line.
+void read_pairs(Options& options)
+{
+  const std::string& path = options.pairs_file;
+  const std::string name = "--pairs '" + path + "'";
+  struct stat info;
+  if(::stat(path.c_str(), &info) != 0)
+    throw dggvtp::Input_error("cannot read " + name + ": " + std::strerror(errno));
+  if(S_ISDIR(info.st_mode))
+    throw dggvtp::Input_error("cannot read " + name + ": it is a directory");
+  FILE* file = std::fopen(path.c_str(), "rb");
+  if(!file)
+    throw dggvtp::Input_error("cannot read " + name + ": " + std::strerror(errno));
+  std::string text;
+  char block[1 << 16];
+  for(std::size_t n; (n = std::fread(block, 1, sizeof block, file)) > 0;)
+    text.append(block, n);
+  const bool failed = std::ferror(file) != 0;
+  std::fclose(file);
+  if(failed)
+    throw dggvtp::Input_error("cannot read " + name);
+  std::size_t number = 0;
+  for(std::size_t start = 0; start < text.size();)
+  {
+    const std::size_t end = (std::min)(text.find('\n', start), text.size());
+    const std::string line = text.substr(start, end - start);
+    start = end + 1;
+    ++number;
+    std::vector<std::string> words;
+    for(std::size_t i = 0; i < line.size();)
+    {
+      if(std::isspace(static_cast<unsigned char>(line[i])))
+      {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while(j < line.size() && !std::isspace(static_cast<unsigned char>(line[j])))
+        ++j;
+      words.push_back(line.substr(i, j - i));
+      i = j;
+    }
+    if(words.empty() || words[0][0] == '#')
+      continue;
+    const std::string where = name + " line " + std::to_string(number) + ": ";
+    if(words.size() != 2)
+      throw dggvtp::Input_error(where + "expected two vertex indices (source target), got '" + shown_line(line) + "'");
+    std::size_t v[2];
+    for(int i = 0; i < 2; ++i)
+    {
+      const std::string& w = words[std::size_t(i)];
+      const auto [end_of_number, error] = std::from_chars(w.data(), w.data() + w.size(), v[i]);
+      if(!std::isdigit(static_cast<unsigned char>(w[0])) || error != std::errc() || end_of_number != w.data() + w.size())
+        throw dggvtp::Input_error(where + "'" + shown_line(w) + "' is not a vertex index (a non-negative integer)");
+    }
+    options.pairs.emplace_back(v[0], v[1]);
+    options.pair_lines.push_back(number);
+  }
 }
 
 int run_main(int argc, char** argv)
@@ -861,6 +1098,8 @@ int run_main(int argc, char** argv)
                                     std::make_pair("--paths", &options.paths), std::make_pair("--stats", &options.stats)})
     if(!path->empty())
       dggvtp::check_writable(std::string(option) + " '" + *path + "'", *path);
+  if(options.has_pairs())
+    read_pairs(options);
 
   const Clock::time_point t0 = Clock::now();
   const dggvtp::Repair_option repair = options.repair_option();
@@ -875,6 +1114,12 @@ int run_main(int argc, char** argv)
       if(!p.is_point && p.vertex >= soup.file_vertices)
         throw dggvtp::Input_error(std::string(what) + " " + std::to_string(p.vertex) + " is out of range (the mesh has " +
                                   std::to_string(soup.file_vertices) + " vertices)");
+  for(std::size_t k = 0; k < options.pairs.size(); ++k)
+    for(std::size_t v : {options.pairs[k].first, options.pairs[k].second})
+      if(v >= soup.file_vertices)
+        throw dggvtp::Input_error(pair_line_text(options, k) + ": vertex " + std::to_string(v) +
+                                  " is out of range (the mesh has " + std::to_string(soup.file_vertices) + " vertices)");
+  options.pair_places = options.pairs;
   const double seconds_read = seconds_since(t0);
   const Clock::time_point t_repair = Clock::now();
   dggvtp::Repair_record repaired;
@@ -886,6 +1131,12 @@ int run_main(int argc, char** argv)
       for(Place& p : *places)
         if(!p.is_point)
           p.vertex = repaired.file_vertex(p.vertex, what);
+    for(std::size_t k = 0; k < options.pair_places.size(); ++k)
+    {
+      const std::string what = pair_line_text(options, k) + ": vertex";
+      options.pair_places[k] = {repaired.file_vertex(options.pair_places[k].first, what),
+                                repaired.file_vertex(options.pair_places[k].second, what)};
+    }
   }
   const double seconds_repair_soup = seconds_since(t_repair);
 
@@ -938,7 +1189,7 @@ int run_main(int argc, char** argv)
   std::string lines; // the samples, or the targets' distances, then the paths' lengths
   for(std::size_t v : run.samples)
     lines += std::to_string(v) + "\n";
-  for(const auto* values : {&run.target_distances, &run.path_lengths})
+  for(const auto* values : {&run.target_distances, &run.path_lengths, &run.pair_distances})
     for(double d : *values)
       lines += number_text(d) + "\n";
   if(!lines.empty())
@@ -951,7 +1202,7 @@ int run_main(int argc, char** argv)
 
   // of what is reported: the vertices, or the targets and paths
   double farthest = 0.;
-  for(const auto* values : {&run.distances, &run.target_distances, &run.path_lengths})
+  for(const auto* values : {&run.distances, &run.target_distances, &run.path_lengths, &run.pair_distances})
     for(double d : *values)
       if(std::isfinite(d))
         farthest = (std::max)(farthest, d);
@@ -961,10 +1212,10 @@ int run_main(int argc, char** argv)
   if(!options.stats.empty())
   {
     Output_file file(options.stats);
-    const Place& first = options.sources.front();
+    const Place* first = options.sources.empty() ? nullptr : &options.sources.front(); // none with --pairs
     std::fprintf(file.get(),
                  "{\"mesh\": %s, \"vertices\": %zu, \"faces\": %zu, \"source\": %s, \"sources\": %zu, "
-                 "\"targets\": %zu, \"paths\": %zu, \"distance_limit\": %s, \"epsilon\": %.17g, "
+                 "\"targets\": %zu, \"paths\": %zu, \"pairs\": %zu, \"distance_limit\": %s, \"epsilon\": %.17g, "
                  "\"precision\": \"%s\", \"threads\": %ld, \"seconds_load\": %.6f, \"seconds_repair\": %.6f, "
                  "\"seconds_prepare\": %.6f, \"seconds_locate\": %.6f, \"seconds_propagate\": %.6f, \"seconds_write\": %.6f, "
                  "\"threads_per_stage\": {\"load\": 1, \"repair\": 1, \"prepare\": %zu, \"locate\": 1, "
@@ -973,8 +1224,8 @@ int run_main(int argc, char** argv)
                  "\"pseudo_sources\": %zu, \"vertices_popped\": %zu, \"vertices_reached\": %zu, "
                  "\"max_distance\": %.17g, \"peak_rss_mb\": %.1f, \"error_bounds\": %s}\n",
                  json_string(options.mesh).c_str(), soup.file_vertices, run.faces,
-                 first.is_point ? "null" : std::to_string(first.vertex).c_str(), options.sources.size(),
-                 options.targets.size(), options.path_targets.size(),
+                 !first || first->is_point ? "null" : std::to_string(first->vertex).c_str(), options.sources.size(),
+                 options.targets.size(), options.path_targets.size(), options.pairs.size(),
                  std::isfinite(options.max_distance) ? number_text(options.max_distance).c_str() : "null",
                  options.epsilon, options.precision.c_str(), options.threads, seconds_read, seconds_repair,
                  run.seconds_prepare, run.seconds_locate, run.seconds_propagate, seconds_write, run.threads, run.threads,
@@ -994,6 +1245,8 @@ int run_main(int argc, char** argv)
         sources += (k == 0 ? " " : ", ") + place_text(options.sources[k]);
     if(options.fps > 0)
       sources = std::to_string(options.fps) + " samples from vertex " + std::to_string(options.sources[0].vertex);
+    if(options.has_pairs())
+      sources = std::to_string(options.pairs.size()) + " pairs of " + options.pairs_file;
     out << "dggvtp: " << options.mesh << ": " << soup.file_vertices << " vertices, " << run.faces << " faces\n"
         << "  " << sources << ", "
         << (options.epsilon > 0. ? "DGG-VTP epsilon " + std::to_string(options.epsilon) : std::string("exact (VTP)"))
@@ -1003,10 +1256,15 @@ int run_main(int argc, char** argv)
         << "prepare " << run.seconds_prepare << " s, "
         << (options.has_points() ? "locate " + std::to_string(run.seconds_locate) + " s, " : std::string())
         << "propagate " << run.seconds_propagate << " s, write " << seconds_write << " s\n"
-        << "  prepared and propagated on " << run.threads << (run.threads == 1 ? " thread\n" : " threads\n")
-        << "  windows created " << s.windows_created << ", peak " << s.windows_peak << ", pseudo-sources "
-        << s.pseudo_sources << "\n";
-    if(options.stops_early())
+        << "  prepared and propagated on " << run.threads << (run.threads == 1 ? " thread\n" : " threads\n");
+    if(!options.has_pairs()) // the pairs' propagations are not counted
+      out << "  windows created " << s.windows_created << ", peak " << s.windows_peak << ", pseudo-sources "
+          << s.pseudo_sources << "\n";
+    if(options.has_pairs())
+      out << "  each pair stopped once its target was final, "
+          << run.pair_distances.size() - dggvtp::count_infinite(run.pair_distances) << " of " << run.pair_distances.size()
+          << " targets reached, farthest at " << farthest << "\n";
+    else if(options.stops_early())
       out << "  stopped once the targets were final, " << s.vertices_reached << " vertices reached, farthest target at "
           << farthest << "\n";
     else

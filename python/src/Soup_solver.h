@@ -92,6 +92,11 @@ public:
   virtual std::vector<double> target_distances(const Query& query, std::vector<Moved_point>& moved,
                                                std::vector<long long>* labels) const = 0;
   virtual Paths shortest_paths(const Query& query, std::vector<Moved_point>& moved) const = 0;
+  // per pair k (query.sources[k], query.targets[k]: vertices), one propagation toward the target,
+  // the pairs in parallel on query.threads, the same bits for any number: its distance into
+  // `values`, and, unless null, a certified lower bound of the exact one into `lower` and the path
+  // from the source to the target into `paths`
+  virtual void pair_distances(const Query& query, double* values, double* lower, Paths* paths) const = 0;
   // farthest-point sampling of `k` vertices from query.sources[0] (a vertex): the samples, the
   // field of them into `distances` and, unless null, the number of each vertex's nearest sample
   // into `labels` and the certified errors of the field into `bounds`
@@ -305,6 +310,60 @@ public:
     return paths;
   }
 
+  void pair_distances(const Query& query, double* values, double* lower, Paths* paths) const override
+  {
+    const std::size_t n = query.sources.size();
+    if(paths)
+      paths->assign(n, {});
+    if(!m_same_vertices)
+    {
+      // a vertex split into copies is several solver vertices: each pair runs as target_distances()
+      // and shortest_paths() run it, and its lower bound is the contract's
+      with_threads(query.threads, [&](auto tag) {
+        CGAL::for_each<decltype(tag)>(boost::irange(std::size_t(0), n), [&](std::size_t k) {
+          stop_if_interrupted(query);
+          Query one = query;
+          one.sources.assign(1, query.sources[k]);
+          one.targets.assign(1, query.targets[k]);
+          one.threads = 1;
+          std::vector<Moved_point> none; // vertices only
+          values[k] = target_distances(one, none, nullptr).front();
+          if(lower)
+            lower[k] = contract_lower_bound(values[k], query.epsilon);
+          if(paths)
+          {
+            one.path_targets = one.targets;
+            (*paths)[k] = shortest_paths(one, none).front();
+            std::reverse((*paths)[k].first.begin(), (*paths)[k].first.end());
+          }
+          return true;
+        });
+      });
+      return;
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> pairs(n);
+    for(std::size_t k = 0; k < n; ++k)
+      pairs[k] = {solver_place(query.sources[k], "source").vertex, solver_place(query.targets[k], "target").vertex};
+    const auto np = named_parameters(query);
+    const auto write = [&](std::size_t k, FT d, FT low) {
+      stop_if_interrupted(query);
+      values[k] = double(d);
+      if(lower)
+        lower[k] = double(low) <= double(d) ? double(low) : std::nextafter(double(d), 0.);
+    };
+    with_threads(query.threads, [&](auto tag) {
+      if(!paths)
+        return m_solver->template compute_pair_distances<decltype(tag)>(pairs, write, np);
+      m_solver->template compute_pair_distances<decltype(tag)>(
+        pairs,
+        [&](std::size_t k, FT d, FT low, const auto& path) {
+          write(k, d, low);
+          (*paths)[k] = polyline_of(path, m_soup.points, m_soup.triangles);
+        },
+        np);
+    });
+  }
+
   std::vector<long long> farthest_point_sampling(const Query& query, std::size_t k, double* distances,
                                                  long long* labels, double* bounds) const override
   {
@@ -334,6 +393,14 @@ public:
   }
 
 private:
+  // a certified lower bound of an exact distance that `d` is within the contract of accuracy
+  // `epsilon` of: d / (1 + epsilon), less the rounding (as the library's for points)
+  static double contract_lower_bound(double d, double epsilon)
+  {
+    const double lower = d / (1. + epsilon);
+    return std::isinf(lower) ? lower : lower - 64. * std::numeric_limits<double>::epsilon() * lower;
+  }
+
   // the file vertex of solver vertex `v`
   std::size_t file_vertex(std::size_t v) const { return m_soup.file_vertex_of.empty() ? v : m_soup.file_vertex_of[v]; }
 

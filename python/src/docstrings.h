@@ -184,6 +184,24 @@ Raises ValueError for k outside [1, num_vertices], first_sample out of range, an
 >>> samples, d, b = solver.farthest_point_sampling(10, epsilon=1e-2, return_distances=True, return_bounds=True)
 )";
 
+const char* const pair_distances = R"(The geodesic distance of each pair (sources[k], targets[k]): two arrays of vertex indices of
+the same length; returns float64 (len(sources),). Each pair is one propagation from its source
+that searches toward its target (ordered by distance plus a lower bound of what is left to go,
+see the manual, "Searching toward a target") and stops once the target's distance is final: a
+fraction of a field for most pairs. The pairs run in parallel on `threads` (0: all cores), the
+same bits for any number. Each value keeps the contract: within [exact, (1 + epsilon) x exact],
+exact in the exact mode (epsilon=0); inf where max_distance or the mesh leaves the target
+unreached.
+
+With return_bounds=True, the certified error of each value follows it (float64 (len(sources),),
+the exact distance lies in [values - bounds, values], as distances(return_bounds=True) gives
+them); with return_paths=True, a list of one float64 (m, 3) polyline per pair, from the source to
+the target, whose length is the value (empty where unreached). Both: (values, bounds, paths).
+
+>>> d = solver.pair_distances([0, 0, 7], [100, 2500, 31], epsilon=1e-3)
+>>> d, errors, paths = solver.pair_distances([0], [2500], return_bounds=True, return_paths=True)
+)";
+
 const char* const local_distance_matrix = R"(The distances within max_distance from each source vertex, as a scipy.sparse.csr_matrix of
 shape (len(sources), num_vertices) (default sources=None: every vertex, in order, a square
 matrix): row k holds every vertex whose computed distance from sources[k] is <= max_distance,

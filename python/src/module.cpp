@@ -495,6 +495,52 @@ PYBIND11_MODULE(_dggvtp, m)
       "sources"_a, py::kw_only(), "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 0,
       "return_bounds"_a = false, doc::distances_from_each)
     .def(
+      "pair_distances",
+      [](const Geodesic_solver& s, const Vertices& sources, const Vertices& targets, double epsilon,
+         double max_distance, long threads, bool return_bounds, bool return_paths) -> Field {
+        Query q = s.query(epsilon, max_distance, threads);
+        q.sources = vertex_places(sources, "source", s.vertices());
+        q.targets = vertex_places(targets, "target", s.vertices());
+        if(sources.object.is_none() || targets.object.is_none())
+          bad("pair_distances() takes two arrays of vertex indices, sources and targets");
+        if(q.sources.size() != q.targets.size())
+          bad("sources and targets pair up: they must have the same length; got " + std::to_string(q.sources.size()) +
+              " sources and " + std::to_string(q.targets.size()) + " targets");
+        const py::ssize_t n = py::ssize_t(q.sources.size());
+        py::array_t<double> d(n);
+        py::array_t<double> bounds(return_bounds ? n : 0);
+        Paths paths;
+        run_interruptible(q, [&] {
+          s.solver->pair_distances(q, d.mutable_data(), return_bounds ? bounds.mutable_data() : nullptr,
+                                   return_paths ? &paths : nullptr);
+        });
+        if(return_bounds) // certified errors, as distances(return_bounds=True) gives them
+          for(py::ssize_t k = 0; k < n; ++k)
+            bounds.mutable_data()[k] = std::isinf(d.data()[k]) ? d.data()[k] : d.data()[k] - bounds.data()[k];
+        warn_unreachable(dggvtp::count_infinite(d.data(), d.data() + n), std::size_t(n), "pairs", max_distance);
+        py::list result;
+        result.append(d);
+        if(return_bounds)
+          result.append(bounds);
+        if(return_paths)
+        {
+          py::list lines;
+          for(const auto& [line, length] : paths)
+          {
+            py::array_t<double> path({py::ssize_t(line.size()), py::ssize_t(3)});
+            if(!line.empty())
+              std::memcpy(path.mutable_data(), line.data(), line.size() * sizeof line[0]);
+            lines.append(path);
+          }
+          result.append(lines);
+        }
+        if(result.size() == 1)
+          return {std::move(d)};
+        return {py::tuple(result)};
+      },
+      "sources"_a, "targets"_a, py::kw_only(), "epsilon"_a = 0., "max_distance"_a = infinity, "threads"_a = 0,
+      "return_bounds"_a = false, "return_paths"_a = false, doc::pair_distances)
+    .def(
       "local_distance_matrix",
       [](const Geodesic_solver& s, double max_distance, const Vertices& sources, double epsilon,
          long threads, bool symmetric, const std::string& format) -> Sparse_matrix {

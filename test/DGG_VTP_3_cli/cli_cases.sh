@@ -26,7 +26,7 @@ run() {
     case ${args[i]} in
       --output|-o|--stats|--labels|--paths|--isolines-output|--error-bounds) outputs+=("${args[i+1]:-}"); i=$((i + 1)) ;;
       --output=*|--stats=*|--labels=*|--paths=*|--isolines-output=*|--error-bounds=*) outputs+=("${args[i]#*=}") ;;
-      --source|-s|--target|--path-to|--max-distance|--output-format|--epsilon|--precision|--threads|--isolines|--isolines-at|--fps|--first-sample) i=$((i + 1)) ;;
+      --source|-s|--target|--path-to|--pairs|--max-distance|--output-format|--epsilon|--precision|--threads|--isolines|--isolines-at|--fps|--first-sample) i=$((i + 1)) ;;
       --source-point|--target-point|--path-to-point) i=$((i + 3)) ;;
       --repair) nan_allowed=true ;;   # a vertex the repairs removed is nan: the cases check which
       -*) ;;
@@ -1395,6 +1395,99 @@ TABLE
     [ -z "$err" ] || fail "--quiet, yet: $err"
     (cd "$work" && timeout 60 script -qec "$bin $spot --quiet --progress --output d.txt" /dev/null) > "$meta/tty" 2>&1
     ! grep -q "of the vertices final" "$meta/tty" || fail "a progress line on the terminal with --quiet" ;;
+  pairs_are_the_targets_values)  # issue 59: --pairs S T within the contract of --source S --target T's exact value
+    # spot: comments, blank lines, tabs and CRLF, the same vertex, a pair and its reverse
+    printf '# source target\n7 5\n\n7\t100\r\n  2929 7  \n7 7\n1500 20\n20 1500\n   # indented comment\n0 2929\n' > "$meta/p.txt"
+    pairs=("7 5" "7 100" "2929 7" "7 7" "1500 20" "20 1500" "0 2929")
+    for mode in --exact "--epsilon 1e-4" "--epsilon 1e-1" "--precision float" "--max-distance 0.3"; do
+      # the pair searches toward its target, the target query grows a disk: the same exact values
+      # to rounding, and with epsilon each within [exact, (1 + epsilon) exact]
+      epsilon=0; exact_mode=$mode
+      if [[ "$mode" == --epsilon* ]]; then epsilon=${mode#--epsilon }; exact_mode=--exact; fi
+      expected=$(for p in "${pairs[@]}"; do set -- $p
+                   "$bin" "$spot" --quiet --threads 1 $exact_mode --source $1 --target $2 || echo "exit $?"; done)
+      run "$spot" $mode --threads 1 --pairs "$meta/p.txt"; expect_rc 0
+      paste <(printf '%s\n' "$out") <(printf '%s\n' "$expected") | awk -v eps="$epsilon" '
+        { if ($1 == "inf" || $2 == "inf") { if ($1 != $2) bad = 1 }
+          else if (!($1 >= $2 * (1 - 1e-12) && $1 <= $2 * (1 + eps) * (1 + 1e-12))) bad = 1 }
+        END { exit bad || NR != 7 }' || fail "$mode: --pairs $(echo $out) not within the contract of $(echo $expected)"
+      expected=$out
+      [[ "$err" == *"7 pairs of"* ]] || fail "the summary should go to stderr and count the pairs: $err"
+      for t in 4 0; do
+        run "$spot" --quiet $mode --threads $t --pairs "$meta/p.txt"; expect_rc 0
+        [ "$out" = "$expected" ] || fail "$mode: --threads $t differs from --threads 1"
+      done
+    done
+    [ "$(printf '%s\n' "$expected" | grep -c inf)" -ge 1 ] || fail "--max-distance 0.3 left every pair reached"
+    # a vertex no face uses: 0 to itself, unreached otherwise, as --source and --target give them
+    printf '3 3\n0 3\n3 0\n0 4\n0 2\n' > "$meta/i.txt"
+    run "$data/two_components_and_isolated_vertex.off" --pairs "$meta/i.txt" --stats "$work/s.json"; expect_warning "3 of 5 pairs"
+    [ "$out" = "$(printf '0\ninf\ninf\ninf\n1')" ] || fail "pairs at an isolated vertex: $out"
+    grep -q '"pairs": 5,' "$work/s.json" || fail "stats: no pair count: $(cat "$work/s.json")"
+    # no pair: no line
+    printf '# nothing\n\n' > "$meta/none.txt"
+    run "$spot" --quiet --pairs "$meta/none.txt"; expect_rc 0
+    [ -z "$out" ] || fail "an empty --pairs file printed $out" ;;
+  pairs_paths)  # issue 59: --pairs with --paths, a path per pair from its source to its target
+    bumpy > "$work/b.off"
+    printf '0 142\n17 60\n60 17\n5 5\n142 0\n' > "$meta/p.txt"
+    for mode in --exact "--epsilon 1e-4"; do
+      run "$work/b.off" --quiet $mode --threads 1 --pairs "$meta/p.txt" --paths "$work/p1.obj"; expect_rc 0
+      distances=$out
+      run "$work/b.off" --quiet $mode --threads 4 --pairs "$meta/p.txt" --paths "$work/p4.obj"; expect_rc 0
+      [ "$out" = "$distances" ] || fail "$mode: the distances differ on 4 threads"
+      cmp -s "$work/p1.obj" "$work/p4.obj" || fail "$mode: the paths differ on 4 threads"
+      run "$work/b.off" --quiet $mode --pairs "$meta/p.txt"; expect_rc 0
+      [ "$out" = "$distances" ] || fail "$mode: the distances differ with --paths"
+      [ "$(grep -c '^# path ' "$work/p1.obj")" -eq 5 ] || fail "$mode: not 5 paths: $(grep '^#' "$work/p1.obj")"
+      # each path starts at its source and ends at its target; its length is its distance (to 1e-12)
+      awk -v pairs="$(tr '\n' ' ' < "$meta/p.txt")" -v distances="$(echo $distances)" -v mesh="$work/b.off" '
+        BEGIN { n = split(pairs, p, " "); split(distances, d, " ")
+                while ((getline line < mesh) > 0) if (++m > 2 && split(line, c, " ") == 3) { x[m - 3] = c[1]; y[m - 3] = c[2]; z[m - 3] = c[3] } }
+        function close_to(a, b) { return a - b <= 1e-12 * (1 + (b < 0 ? -b : b)) && b - a <= 1e-12 * (1 + (b < 0 ? -b : b)) }
+        function end_path() { if (k == 0) return
+          s = p[2 * k - 1]; t = p[2 * k]
+          if (!close_to(first[1], x[s]) || !close_to(first[2], y[s]) || !close_to(first[3], z[s])) { print "path " k " starts off vertex " s; bad = 1 }
+          if (!close_to(last[1], x[t]) || !close_to(last[2], y[t]) || !close_to(last[3], z[t])) { print "path " k " ends off vertex " t; bad = 1 }
+          if (!close_to(len, d[k]) || (s == t) != (points == 1)) { print "path " k ": length " len ", distance " d[k] ", " points " points"; bad = 1 } }
+        /^# path / { end_path(); ++k; points = 0; len = $NF; next }
+        /^v / { if (++points == 1) { first[1] = $2; first[2] = $3; first[3] = $4 } last[1] = $2; last[2] = $3; last[3] = $4 }
+        END { end_path(); if (k != n / 2) { print k " paths"; bad = 1 } exit bad }' "$work/p1.obj" || fail "$mode: the paths of the pairs"
+      rm "$work/p1.obj" "$work/p4.obj"
+    done
+    # beyond --max-distance: inf, no points
+    run "$work/b.off" --quiet --max-distance 1 --pairs "$meta/p.txt" --paths "$work/p.obj"; expect_rc 0
+    [ "$out" = "$(printf 'inf\ninf\ninf\n0\ninf')" ] || fail "pairs beyond the limit: $out"
+    [ "$(grep -c '^v ' "$work/p.obj")" -eq 1 ] && [ "$(grep -c 'unreached' "$work/p.obj")" -eq 4 ] || fail "unreached paths: $(cat "$work/p.obj")" ;;
+  pairs_refusals)  # issue 59: bad --pairs files (exit 2, the file and the line named), bad combinations (exit 1)
+    for args in "--source 3" "--source-point 0 0 0" "--target 3" "--path-to 3" "--output $work/d.txt" "--labels $work/l.txt" \
+                "--error-bounds $work/e.txt" "--fps 3" "--isolines 3 --isolines-output $work/i.obj" "--paths -"; do
+      run "$spot" --pairs "$meta/p.txt" $args; expect_usage_error
+      [[ "$err" == *--pairs* || "$err" == *"standard output"* ]] || fail "$args: the error does not name --pairs: $err"
+    done
+    run "$spot" --paths "$work/p.obj"; expect_usage_error
+    run "$spot" --pairs; expect_usage_error
+    run "$spot" --pairs "$meta/none.txt" --stats "$work/d.txt"; expect_input_error
+    [[ "$err" == *"$meta/none.txt"* ]] || fail "a missing file not named: $err"
+    run "$spot" --pairs "$meta" --stats "$work/d.txt"; expect_input_error
+    line=0
+    for bad in "1 2 3" "5" "1 x" "-1 2" "1 +2" "1.5 2" "1 2 # comment" "0x1 2" "99999999999999999999999 1" "1 2930"; do
+      printf '# pairs\n0 1\n\n%s\n2 3\n' "$bad" > "$meta/bad.txt"
+      run "$spot" --pairs "$meta/bad.txt" --stats "$work/d.txt"; expect_input_error
+      [[ "$err" == *"--pairs '$meta/bad.txt' line 4:"* ]] || fail "'$bad': the file and line not named: $err"
+    done
+    [[ "$err" == *"out of range"* ]] || fail "out of range: $err"
+    printf '0 1\n' > "$meta/p.txt"; printf '\0\0\0 1\n' >> "$meta/p.txt"
+    run "$spot" --pairs "$meta/p.txt"; expect_input_error
+    [[ "$err" == *"line 2:"* ]] || fail "NUL bytes: $err"
+    # a vertex split into copies by the input policy: refused, with what to do; the others are taken
+    printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n' | input e.off
+    printf '2 3\n2 0\n' > "$meta/p.txt"
+    run "$work/e.off" --pairs "$meta/p.txt" --stats "$work/d.txt"; expect_rc 2
+    [[ "$(printf '%s\n' "$err" | grep ^error:)" == *"line 2: vertex 0 was split into 3 copies"*"--source 0"* ]] || fail "copies: $err"
+    printf '2 3\n4 2\n' > "$meta/p.txt"
+    run "$work/e.off" --quiet --pairs "$meta/p.txt"; expect_rc 0
+    [ "$out" = "$(printf '2\n2')" ] || fail "pairs beside copies: $out" ;;
   *) fail "unknown case" ;;
 esac
 echo "ok ($case)"

@@ -32,7 +32,8 @@ __all__ = ["GeodesicSolver", "InputError", "geodesic_distances", "read_mesh", "_
 # pybind11's TypeErrors print every argument (the whole V and F): one line instead
 read_mesh = short_type_errors(read_mesh, "read_mesh")
 for _name in ("__init__", "distances", "distances_from_each", "local_distance_matrix", "target_distances",
-              "distances_and_paths", "geodesic_path", "distance_and_path", "farthest_point_sampling"):
+              "distances_and_paths", "geodesic_path", "distance_and_path", "farthest_point_sampling",
+              "pair_distances"):
     setattr(GeodesicSolver, _name, short_type_errors(getattr(GeodesicSolver, _name), f"GeodesicSolver.{_name}"))
 # the former spellings, for one more release (see _deprecated.py)
 GeodesicSolver.__init__ = _deprecated.keyword_precision(GeodesicSolver.__init__)  # type: ignore[method-assign]

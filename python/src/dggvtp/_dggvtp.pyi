@@ -78,6 +78,23 @@ class GeodesicSolver:
     def distances_from_each(self, sources: _SourceVertices, *, epsilon: _Real = 0.0, max_distance: _Real = ...,
                             threads: int = 0,
                             return_bounds: bool = False) -> Union[_Distances, Tuple[_Distances, _Distances]]: ...
+    # the values, then bounds and paths, those asked for, in that order
+    @overload
+    def pair_distances(self, sources: _SourceVertices, targets: _SourceVertices, *, epsilon: _Real = 0.0,
+                       max_distance: _Real = ..., threads: int = 0, return_bounds: Literal[False] = False,
+                       return_paths: Literal[False] = False) -> _Distances: ...
+    @overload
+    def pair_distances(self, sources: _SourceVertices, targets: _SourceVertices, *, epsilon: _Real = 0.0,
+                       max_distance: _Real = ..., threads: int = 0, return_bounds: Literal[True],
+                       return_paths: Literal[False] = False) -> Tuple[_Distances, _Distances]: ...
+    @overload
+    def pair_distances(self, sources: _SourceVertices, targets: _SourceVertices, *, epsilon: _Real = 0.0,
+                       max_distance: _Real = ..., threads: int = 0, return_bounds: Literal[False] = False,
+                       return_paths: Literal[True]) -> Tuple[_Distances, List[_Distances]]: ...
+    @overload
+    def pair_distances(self, sources: _SourceVertices, targets: _SourceVertices, *, epsilon: _Real = 0.0,
+                       max_distance: _Real = ..., threads: int = 0, return_bounds: Literal[True],
+                       return_paths: Literal[True]) -> Tuple[_Distances, _Distances, List[_Distances]]: ...
     # the samples, then distances, labels and bounds, those asked for, in that order
     @overload
     def farthest_point_sampling(self, k: int, *, first_sample: int = 0, epsilon: _Real = 0.0, threads: int = 0,

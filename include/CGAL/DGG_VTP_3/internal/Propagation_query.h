@@ -49,6 +49,9 @@ struct Propagation_query
   // stop once these are final (none: the whole field)
   std::vector<Index> vertex_targets;
   std::vector<Surface_point<FT>> point_targets;
+  // search toward the targets (see Distance_to_go): the pair queries do; the other target queries
+  // grow a disk, whose values are the whole field's bits (the manual, "Targets")
+  bool toward_targets = false;
   bool record_origins = false;                // the pseudo-source of each vertex (nearest sources, paths)
   bool record_arrivals = false;               // the direction each vertex's path arrives from (paths)
   // Add the sources to a field rather than start from nothing (see Propagation_vertices::keep_field):

@@ -307,6 +307,7 @@ public:
       }
       ++k;
       s.query.record_origins = s.query.record_arrivals = paths;
+      s.query.toward_targets = true;
       set_ups.push_back(std::move(s));
     }
     CGAL::for_each<Effective_tag<ConcurrencyTag>>(boost::irange(std::size_t(0), set_ups.size()), [&](std::size_t i) {

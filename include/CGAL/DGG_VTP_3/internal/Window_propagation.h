@@ -173,13 +173,13 @@ private:
     m_stats = Propagation_statistics();
     m_progress.reset();
     m_targets = Point_targets<FT>();
-    m_to_go = query.vertex_targets.empty() && query.point_targets.empty()
+    m_to_go = !query.toward_targets || (query.vertex_targets.empty() && query.point_targets.empty())
                 ? Distance_to_go<FT>()
                 : Distance_to_go<FT>(m_mesh, query.vertex_targets, query.point_targets);
   }
 
   // A vertex's place in the queues: its distance, plus the lower bound of the distance still to go
-  // to the targets of a query that has some (a search toward them: see Distance_to_go). A queue
+  // to the targets of a query that searches toward them (see Distance_to_go). A queue
   // entry whose order is above this is superseded.
   FT order(Index v) const
   {
