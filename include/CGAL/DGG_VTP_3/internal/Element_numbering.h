@@ -135,6 +135,9 @@ public:
 
   // the user's number of vertex i, and the vertex of the user's number j
   std::size_t user_number(std::size_t i) const { return m_order.vertices[i]; }
+  // the same, as arrays: per vertex its user's number, and per user's number its vertex
+  const std::vector<std::uint32_t>& user_numbers() const { return m_order.vertices; }
+  const std::vector<std::uint32_t>& vertices_of_user_numbers() const { return m_vertex; }
   vertex_descriptor user_vertex(std::size_t j) const { return m_user.vertex(j); }
 
 private:

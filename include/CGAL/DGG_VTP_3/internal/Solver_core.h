@@ -164,7 +164,9 @@ public:
     const auto lease = scratch();
     Propagation& propagation = lease->propagation;
     const std::vector<Index> samples =
-      internal::farthest_point_sampling<Effective_tag<ConcurrencyTag>>(propagation, first, k, accuracy, progress_of(np));
+      internal::farthest_point_sampling<Effective_tag<ConcurrencyTag>>(propagation, first, k, accuracy, progress_of(np),
+                                                                       m_numbering.user_numbers(),
+                                                                       m_numbering.vertices_of_user_numbers());
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::distance_map_t>::value)
       write_distances(propagation, parameters::get_parameter(np, internal_np::distance_map_t()));
     write_bounds_and_labels(propagation, np);
