@@ -340,6 +340,11 @@ PYBIND11_MODULE(_dggvtp, m)
 {
   m.doc() = doc::module;
   m.attr("__version__") = DGG_VTP_3_VERSION_STR;
+#ifdef DGGVTP_PYTHON_TEST_HOOKS // a module of the test build (interrupt.h): never the one pip installs
+  m.attr("_test_hooks") = true;
+#else
+  m.attr("_test_hooks") = false;
+#endif
   py::register_exception<dggvtp::Input_error>(m, "InputError", PyExc_ValueError);
   m.attr("InputError").attr("__doc__") = doc::input_error;
 

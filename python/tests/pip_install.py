@@ -61,6 +61,10 @@ assert pathlib.Path(sys.prefix) in package.parents, f"dggvtp imported from {pack
 for name in ("py.typed", "__init__.pyi", "_dggvtp.pyi"):
     assert (package / name).is_file(), f"{name} is not installed beside the module"
 assert list(package.glob("_dggvtp*.so")), "the extension module is not in the package directory"
+# the test hooks of python/src/interrupt.h are compiled into the test build's module only
+assert dggvtp._dggvtp._test_hooks is False, "the installed module has the test hooks (DGGVTP_PYTHON_TEST_HOOKS)"
+for so in package.glob("_dggvtp*.so"):
+    assert b"DGGVTP_TEST_SIGINT_AT_CHECK" not in so.read_bytes(), f"{so} reads DGGVTP_TEST_SIGINT_AT_CHECK"
 assert dggvtp.__version__ == importlib.metadata.version("dggvtp") == sys.argv[2], (
     dggvtp.__version__, importlib.metadata.version("dggvtp"), sys.argv[2])
 requires = importlib.metadata.requires("dggvtp")

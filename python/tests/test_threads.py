@@ -42,18 +42,28 @@ def test_threads_give_the_bits_of_one_thread(finned, epsilon):
 def test_python_threads_share_a_solver(finned):
     sources = [3, 2000, 4000, 6000, 8000, 9800]
     expected = [finned.distances(s, epsilon=1e-3) for s in sources]
-    wrong = []
+    wrong, errors, done = [], [], []
 
     def work(k):
-        for run in range(max(1, RUNS // 5)):
-            for i in range(len(sources)):
-                j = (i + k) % len(sources)
-                if not same_bits(finned.distances(sources[j], epsilon=1e-3, threads=2), expected[j]):
-                    wrong.append((k, run, j))
+        # an exception here would only reach threading.excepthook (a pytest warning, the test
+        # passing): it is kept and raised by the test, and each worker says it finished
+        try:
+            for run in range(max(1, RUNS // 5)):
+                for i in range(len(sources)):
+                    j = (i + k) % len(sources)
+                    if not same_bits(finned.distances(sources[j], epsilon=1e-3, threads=2), expected[j]):
+                        wrong.append((k, run, j))
+            done.append(k)
+        except BaseException as error:  # noqa: B036 (raised again on the test's thread)
+            errors.append((k, error))
 
     threads = [threading.Thread(target=work, args=(k,)) for k in range(3)]
     for t in threads:
         t.start()
     for t in threads:
         t.join()
+    if errors:
+        k, error = errors[0]
+        raise AssertionError(f"Python thread {k} raised ({len(errors)} of 3 did): {error!r}") from error
+    assert sorted(done) == [0, 1, 2], done
     assert wrong == []

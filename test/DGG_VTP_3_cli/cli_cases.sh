@@ -104,13 +104,27 @@ off_to() {
       line = "f"; for (k = 2; k <= NF; ++k) line = line " " ($k + 1) (to == "obj_slashes" ? "/" ($k + 1) "/1" : "")
       print line }'
 }
-# expect_lines_within TOLERANCE FILE EXPECTED...: the same, to TOLERANCE relative (inf and nan exactly)
+# awk's test of a finite number as the programs print it (not nan, -nan, inf, an empty field or a
+# word): awk reads "-nan" as a number, and a comparison with NaN is false, so it would pass
+awk_finite='function finite(x) { return x ~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/ }'
+# expect_rows N FILE...: each FILE is there, not empty, and has N lines. Before a comparison of
+# files line by line (paste A B | awk): with a file missing or empty it compares nothing and passes.
+expect_rows() {
+  local n=$1 f; shift
+  for f in "$@"; do
+    [ -s "$f" ] || fail "$f is missing or empty"
+    [ "$(wc -l < "$f")" -eq "$n" ] || fail "$f: $(wc -l < "$f") lines, expected $n"
+  done
+}
+# expect_lines_within TOLERANCE FILE EXPECTED...: the same, to TOLERANCE relative (inf and nan
+# exactly: a value that is not a finite number passes only where EXPECTED has the same word)
 expect_lines_within() {
   local tolerance=$1 file=$2; shift 2
   local expected="$*"
-  awk -v expected="$expected" -v tol="$tolerance" 'BEGIN { n = split(expected, e, " ") }
+  [ -s "$file" ] || fail "$file is missing or empty"
+  awk -v expected="$expected" -v tol="$tolerance" "$awk_finite"'BEGIN { n = split(expected, e, " ") }
     { ++i; if (i > n) { print "extra line " i; bad = 1; next }
-      if (e[i] ~ /^(inf|nan)$/ || $1 ~ /^(inf|nan)$/) { if ($1 != e[i]) { print "line " i ": " $1 " != " e[i]; bad = 1 } }
+      if (!finite(e[i]) || !finite($1)) { if (($1 "") != (e[i] "") || NF != 1) { print "line " i ": " $0 " != " e[i]; bad = 1 } }
       else { d = $1 - e[i]; if (d < 0) d = -d; if (d > tol * (e[i] < 0 ? -e[i] : e[i]) + 1e-300) { print "line " i ": " $1 " != " e[i]; bad = 1 } } }
     END { if (i != n) { print i " lines, expected " n; bad = 1 } exit bad }' "$file" || fail "unexpected distances in $file"
 }
@@ -150,14 +164,17 @@ bumpy() {
 vertex_of() { sed -n "$(($2 + 3))p" "$1"; }
 # line N FILE: line N (1-based) of FILE
 line() { sed -n "$1p" "$2"; }
-# expect_same_within TOLERANCE A B: two files of distances, line by line, to TOLERANCE relative (inf exactly)
+# expect_same_within TOLERANCE A B: two files of distances, line by line, to TOLERANCE relative (inf
+# exactly; nan, -nan or anything else that is not a number fails, and so do a missing or empty file
+# and files of different lengths)
 expect_same_within() {
-  paste "$2" "$3" | awk -v tol="$1" '{ ++n
-      if ($1 == "inf" || $2 == "inf") { if ($1 != $2) { print "line " n ": " $1 " != " $2; bad = 1 }; next }
+  [ -s "$2" ] || fail "$2 is missing or empty"
+  expect_rows "$(wc -l < "$2")" "$3"
+  paste "$2" "$3" | awk -v tol="$1" -v rows="$(wc -l < "$2")" "$awk_finite"'{ ++n
+      if (!finite($1) || !finite($2)) { if (($1 "") != "inf" || ($2 "") != "inf" || NF != 2) { print "line " n ": " $1 " != " $2; bad = 1 }; next }
       d = $1 - $2; if (d < 0) d = -d; m = $2 < 0 ? -$2 : $2
       if (d > tol * m + 1e-300) { print "line " n ": " $1 " != " $2; bad = 1 } }
-    END { exit bad }' || fail "$2 and $3 differ"
-  [ "$(wc -l < "$2")" -eq "$(wc -l < "$3")" ] || fail "$2 and $3 differ in length"
+    END { if (n != rows) { print n " lines compared, expected " rows; bad = 1 } exit bad }' || fail "$2 and $3 differ"
 }
 # check_npy FILE DESCR COUNT: a NumPy .npy file, format version 1.0, of COUNT values of type DESCR
 check_npy() {
@@ -213,7 +230,11 @@ case $case in
     run "$spot" --quiet --output "$work/exact.txt"; expect_rc 0
     for e in 1 1e-1 1e-2 1e-3 1e-4 1e-6; do
       run "$spot" --quiet --epsilon $e --output "$work/approx.txt"; expect_rc 0
-      paste "$work/approx.txt" "$work/exact.txt" | awk -v e=$e '$2 > 0 { r = ($1 - $2) / $2; if (r > e || r < -1e-12) { print NR, r; bad = 1 } } END { exit bad }' \
+      expect_rows 2930 "$work/approx.txt" "$work/exact.txt"   # spot: one component, every vertex finite
+      paste "$work/approx.txt" "$work/exact.txt" | awk -v e=$e "$awk_finite"'
+        !finite($1) || !finite($2) || NF != 2 { print NR ": " $0; bad = 1; next }
+        $2 > 0 { r = ($1 - $2) / $2; if (r > e || r < -1e-12) { print NR, r; bad = 1 } }
+        END { if (NR != 2930) { print NR " lines"; bad = 1 } exit bad }' \
         || fail "epsilon $e: a distance outside the contract"
     done ;;
   threads_give_the_same_bytes)  # lion_head: 8 patches of faces, whatever the number of threads
@@ -307,7 +328,11 @@ case $case in
   float_precision)
     run "$spot" --quiet --output "$work/double.txt"; expect_rc 0
     run "$spot" --quiet --precision float --output "$work/float.txt"; expect_rc 0
-    paste "$work/float.txt" "$work/double.txt" | awk '$2 > 0 { r = ($1 - $2) / $2; if (r < 0) r = -r; if (r > 1e-5) { print NR, r; bad = 1 } } END { exit bad }' \
+    expect_rows 2930 "$work/float.txt" "$work/double.txt"   # spot: one component, every vertex finite
+    paste "$work/float.txt" "$work/double.txt" | awk "$awk_finite"'
+      !finite($1) || !finite($2) || NF != 2 { print NR ": " $0; bad = 1; next }
+      $2 > 0 { r = ($1 - $2) / $2; if (r < 0) r = -r; if (r > 1e-5) { print NR, r; bad = 1 } }
+      END { if (NR != 2930) { print NR " lines"; bad = 1 } exit bad }' \
       || fail "float distances differ from double by more than 1e-5" ;;
   two_components_and_isolated_vertex)
     run "$data/two_components_and_isolated_vertex.off" --quiet --output "$work/d.txt"; expect_rc 0
@@ -779,6 +804,7 @@ case $case in
   # ---- several sources, surface points, targets, limits, labels, paths, npy (issues 16-18)
   several_sources_give_the_minimum)  # the field of three sources is the smallest of their three fields
     for s in 0 100 2000; do run "$spot" --quiet --source $s --output "$work/d$s.txt"; expect_rc 0; done
+    expect_rows 2930 "$work/d0.txt" "$work/d100.txt" "$work/d2000.txt"
     paste "$work/d0.txt" "$work/d100.txt" "$work/d2000.txt" |
       awk '{ m = $1; if ($2 + 0 < m + 0) m = $2; if ($3 + 0 < m + 0) m = $3; print m }' > "$meta/min.txt"
     run "$spot" --source 0 --source 100 --source 2000 --output "$work/d.txt"; expect_rc 0
@@ -787,7 +813,9 @@ case $case in
   labels_are_the_nearest_source)  # the number of the option whose field is the smallest (ties within rounding skipped)
     for s in 0 100 2000; do run "$spot" --quiet --source $s --output "$work/d$s.txt"; expect_rc 0; done
     run "$spot" --quiet --source 0 --source 100 --source 2000 --labels "$work/l.txt"; expect_rc 0
-    paste "$work/d0.txt" "$work/d100.txt" "$work/d2000.txt" "$work/l.txt" | awk '
+    expect_rows 2930 "$work/d0.txt" "$work/d100.txt" "$work/d2000.txt" "$work/l.txt"
+    paste "$work/d0.txt" "$work/d100.txt" "$work/d2000.txt" "$work/l.txt" | awk "$awk_finite"'
+      !finite($1) || !finite($2) || !finite($3) || $4 !~ /^[0-2]$/ || NF != 4 { print "vertex " NR - 1 ": " $0; bad = 1; next }
       { best = 0; m = $1; for (k = 1; k < 3; ++k) if ($(k + 1) + 0 < m + 0) { m = $(k + 1); best = k }
         second = -1; for (k = 0; k < 3; ++k) if (k != best && (second < 0 || $(k + 1) + 0 < second)) second = $(k + 1) + 0
         if ($4 != best && second - m > 1e-9 * m) { print "vertex " NR - 1 ": label " $4 ", nearest " best; bad = 1 }
@@ -817,6 +845,7 @@ case $case in
   max_distance_cuts_off)  # vertices farther than D are inf, the others keep their distance
     run "$spot" --quiet --source 9 --output "$work/full.txt"; expect_rc 0
     run "$spot" --quiet --source 9 --max-distance 0.5 --output "$work/cut.txt" --stats "$work/s.json"; expect_rc 0
+    expect_rows 2930 "$work/full.txt" "$work/cut.txt"
     paste "$work/full.txt" "$work/cut.txt" |
       awk '{ e = ($1 + 0 > 0.5) ? "inf" : $1; if ($2 != e) { print NR ": " $2 " != " e; bad = 1 } if (e == "inf") ++cut }
            END { if (cut == 0 || cut == NR) { print cut " cut"; bad = 1 } exit bad }' || fail "--max-distance 0.5"
@@ -1131,8 +1160,10 @@ TABLE
     run "$spot" --quiet --source 3 --epsilon 1e-2 --output "$work/d.txt" --error-bounds "$work/b.txt" --stats "$work/s.json"; expect_rc 0
     [ "$(wc -l < "$work/b.txt")" -eq 2930 ] || fail "not one bound per vertex"
     [ "$(line 4 "$work/b.txt")" = 0 ] || fail "the source's bound is $(line 4 "$work/b.txt")"
-    paste "$work/d.txt" "$work/b.txt" | awk '{ if ($2 < 0 || $2 > 1e-2 * $1 * (1 + 1e-12)) bad++; if ($2 == 0) zero++ }
-      END { exit !(bad == 0 && zero >= 1 && zero < NR) }' || fail "bounds outside [0, epsilon d], or all or none 0"
+    expect_rows 2930 "$work/d.txt"
+    paste "$work/d.txt" "$work/b.txt" | awk "$awk_finite"'!finite($1) || !finite($2) || NF != 2 { bad++; next }
+      { if ($2 < 0 || $2 > 1e-2 * $1 * (1 + 1e-12)) bad++; if ($2 == 0) zero++ }
+      END { exit !(bad == 0 && zero >= 1 && zero < NR && NR == 2930) }' || fail "bounds outside [0, epsilon d], not numbers, or all or none 0"
     grep -q '"error_bounds": {"max_over_epsilon_distance": 0\.9[0-9]*, "mean_over_epsilon_distance": 0\.[0-9]*, "certified_exact": 0\.0[0-9]*}' "$work/s.json" ||
       fail "--stats error_bounds: $(grep -o '"error_bounds.*' "$work/s.json")"
     run "$spot" --source 3 --epsilon 1e-2 --error-bounds "$work/b2.txt"; expect_rc 0
