@@ -10,6 +10,7 @@
 // down; a query stopped early (targets, max_distance) still gives valid bounds.
 
 #include "test_utilities.h"
+#include "without_tbb.h"
 
 #include <cstring>
 
@@ -171,6 +172,8 @@ BOOST_AUTO_TEST_CASE(same_bits_on_every_solver_and_tag)
       BOOST_TEST(same_bits(ds, d), threads << " threads: the distances");
       BOOST_TEST(same_bits(ks, k), threads << " threads: the bounds");
     });
+#else
+  DGG_VTP_3_REFUSE_WITHOUT_TBB("Parallel_tag against Sequential_tag");
 #endif
 }
 
