@@ -3,7 +3,9 @@
 #
 # Turns the test tree of a Boost.Test executable into CTest tests, one per leaf test case.
 # Run as a post-build step:
-#   cmake -D TEST_EXECUTABLE=<exe> -D TEST_PREFIX=<prefix> -D TESTS_FILE=<out.cmake> -P discover_tests.cmake
+#   cmake -D TEST_EXECUTABLE=<exe> -D TEST_PREFIX=<prefix> -D TESTS_FILE=<out.cmake>
+#         [-D SKIP_REGULAR_EXPRESSION=<regex>] -P discover_tests.cmake
+# (each test then counts as skipped when its output matches <regex>)
 # `--list_content` prints one line per unit, indented by 4 spaces per level, with a trailing '*'
 # when the unit is enabled (Boost 1.74 prints it on stderr, later versions on stdout).
 
@@ -60,6 +62,10 @@ if(_count GREATER 0)
       endif()
       string(APPEND _content
         "add_test(\"${TEST_PREFIX}${_full}\" \"${TEST_EXECUTABLE}\" \"--run_test=${_full}\" --log_level=message --report_level=short)\n")
+      if(SKIP_REGULAR_EXPRESSION)
+        string(APPEND _content
+          "set_tests_properties(\"${TEST_PREFIX}${_full}\" PROPERTIES SKIP_REGULAR_EXPRESSION \"${SKIP_REGULAR_EXPRESSION}\")\n")
+      endif()
       math(EXPR _registered "${_registered} + 1")
     endif()
     list(APPEND _path "${_name}")

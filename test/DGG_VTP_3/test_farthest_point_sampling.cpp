@@ -29,6 +29,10 @@ namespace {
 
 using Solver = CGAL::DGG_VTP_3::Triangle_soup_geodesic_distance_solver<Epick>;
 const double infinity = std::numeric_limits<double>::infinity();
+// what an output holds before the call: a value the call does not write fails the checks (a
+// distance or bound of 0, or the label 0 or the library's "none", -1, would pass some)
+const double not_written = std::numeric_limits<double>::quiet_NaN();
+const std::size_t label_not_written = std::size_t(-2);
 
 Solver make_solver(const Soup& soup)
 {
@@ -56,9 +60,9 @@ Sampling sample(const Solver& solver, std::size_t k, double epsilon, std::size_t
 {
   Sampling s;
   const std::size_t nv = solver.number_of_vertices();
-  s.distances.assign(nv, 0.);
-  s.lower_bounds.assign(nv, 0.);
-  s.labels.assign(nv, 0);
+  s.distances.assign(nv, not_written);
+  s.lower_bounds.assign(nv, not_written);
+  s.labels.assign(nv, label_not_written);
   solver.farthest_point_sampling(k, std::back_inserter(s.samples),
                                  DP::first_sample(first,
                                  DP::distance_map(CGAL::make_property_map(s.distances),
@@ -100,12 +104,12 @@ void check_field(const Sampling& s, const std::vector<std::vector<double>>& fiel
       ++wrong;
     if(!(s.labels[v] < s.samples.size() && fields[s.labels[v]][v] <= e * (1 + epsilon) * (1 + slack) + 1e-300))
       ++wrong_labels;
-    if(!(s.lower_bounds[v] <= e * (1 + slack) && s.lower_bounds[v] >= 0.))
+    if(!(s.lower_bounds[v] <= e * (1 + slack) && s.lower_bounds[v] >= 0.)) // NaN: never written
       ++wrong_bounds;
   }
-  BOOST_TEST(wrong == 0u, what << ": " << wrong << " distances out of [exact, (1 + epsilon) exact]");
-  BOOST_TEST(wrong_labels == 0u, what << ": " << wrong_labels << " labels name a sample beyond (1 + epsilon) exact");
-  BOOST_TEST(wrong_bounds == 0u, what << ": " << wrong_bounds << " lower bounds above the exact distance");
+  BOOST_TEST(wrong == 0u, what << ": " << wrong << " distances out of [exact, (1 + epsilon) exact] or not written");
+  BOOST_TEST(wrong_labels == 0u, what << ": " << wrong_labels << " labels name no sample or one beyond (1 + epsilon) exact");
+  BOOST_TEST(wrong_bounds == 0u, what << ": " << wrong_bounds << " lower bounds above the exact distance, negative or not written");
 }
 
 // every sample is the farthest (exactly: the greedy sequence; else within 1 + epsilon), and the
@@ -172,14 +176,15 @@ BOOST_AUTO_TEST_CASE(sources_added_to_a_field)
   for(double epsilon : {0., 1e-2, 5e-1})
   {
     Sampling prior;
-    prior.distances.assign(nv, 0.), prior.lower_bounds.assign(nv, 0.), prior.labels.assign(nv, 0);
+    prior.distances.assign(nv, not_written), prior.lower_bounds.assign(nv, not_written);
+    prior.labels.assign(nv, label_not_written);
     solver.compute_distances_to_nearest_source(earlier, CGAL::make_property_map(prior.distances),
                                                DP::nearest_source_map(CGAL::make_property_map(prior.labels),
                                                DP::lower_bound_map(CGAL::make_property_map(prior.lower_bounds),
                                                CGAL::parameters::accuracy(epsilon))));
     Sampling s;
     s.samples = {earlier[0], earlier[1], later[0], later[1]};
-    s.distances.assign(nv, 0.), s.lower_bounds.assign(nv, 0.), s.labels.assign(nv, 0);
+    s.distances.assign(nv, not_written), s.lower_bounds.assign(nv, not_written), s.labels.assign(nv, label_not_written);
     const auto stats = solver.compute_distances_to_nearest_source(
       later, CGAL::make_property_map(s.distances),
       DP::prior_distance_map(CGAL::make_property_map(prior.distances),

@@ -21,7 +21,9 @@
 // must be the same to the bit (check_fast_reader).
 //
 // Allowed outcomes are those of dggvtp's input policy: dggvtp::Input_error (exit status 2) or the
-// library's std::invalid_argument (its documented preconditions), or distances. Everything else
+// library's std::invalid_argument (its documented preconditions), from the loader or from making
+// the solver only, but for a propagation's window limit on edges of more than two triangles
+// (is_window_limit), or distances. Everything else (an exception from a later check included)
 // aborts, so that libFuzzer keeps the input: another exception (it would reach the user as an
 // unexplained `error:`), a NaN or negative distance, a source not at 0, a vertex reached by one
 // mode and not by the other. With DGG_VTP_3_FUZZ_CONTRACT=1 in the environment, a DGG-VTP
@@ -63,6 +65,13 @@ namespace {
 {
   std::fprintf(stderr, "fuzz_dggvtp: %s\n", what.c_str());
   std::abort();
+}
+
+// The one refusal a propagation may make of a mesh the solver took: too many windows between the
+// sheets of edges of more than two triangles (internal/Vertex_copies.h, refuse_windows_beyond).
+bool is_window_limit(const std::invalid_argument& e)
+{
+  return std::string(e.what()).rfind("the propagation made more than ", 0) == 0;
 }
 
 template <class Kernel>
@@ -127,9 +136,11 @@ void check_sampling(const Solver<Kernel>& solver, std::size_t first)
     for(std::size_t i = 0; i < n; ++i)
       nearest[i] = (std::min)(nearest[i], row[i]);
   }
+  // (both finite for the tolerance: |finite - inf| <= tolerance * inf would let a finite value
+  // pass where the samples' fields do not reach)
   for(std::size_t i = 0; i < n; ++i)
     if(!(d[i] == nearest[i] ||
-         (std::isfinite(double(d[i])) &&
+         (std::isfinite(double(d[i])) && std::isfinite(double(nearest[i])) &&
           std::abs(double(d[i] - nearest[i])) <= (1e-13 + 4. * double(std::numeric_limits<FT>::epsilon())) * double(nearest[i]))))
       fail("farthest-point sampling: vertex " + std::to_string(i) + " at " + std::to_string(double(d[i])) +
            ", its samples' fields give " + std::to_string(double(nearest[i])));
@@ -145,11 +156,25 @@ void check_sampling(const Solver<Kernel>& solver, std::size_t first)
 #endif
 }
 
+// The checks of one input. Making the solver may refuse it (dggvtp::Input_error, or the
+// library's std::invalid_argument for its documented preconditions); after that, an exception
+// from a check reaches the caller, which aborts unless it is a propagation's window limit.
 template <class Kernel>
 void run(dggvtp::Loaded_soup& soup, std::size_t source)
 {
   std::optional<Solver<Kernel>> solver;
-  dggvtp::make_solver(soup, solver);
+  try
+  {
+    dggvtp::make_solver(soup, solver);
+  }
+  catch(const dggvtp::Input_error&)
+  {
+    return;
+  }
+  catch(const std::invalid_argument&)
+  {
+    return;
+  }
   if(const std::vector<std::size_t> first = dggvtp::solver_vertices_of(soup, source); !first.empty())
     check_sampling<Kernel>(*solver, first[0]);
   const std::vector<double> exact = file_distances<Kernel>(soup, *solver, source, 0.);
@@ -227,15 +252,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::fclose(file);
   }
   check_fast_reader(path);
+  // the loader may refuse the file; after it, only making the solver may refuse it (see run)
+  std::optional<dggvtp::Loaded_soup> soup;
   try
   {
-    dggvtp::Loaded_soup soup = dggvtp::load_soup(path);
-    std::remove(path.c_str());
-    const std::size_t source = (selector >> 3) % soup.file_vertices;
-    if(selector & 4u)
-      run<CGAL::Simple_cartesian<float>>(soup, source);
-    else
-      run<CGAL::Exact_predicates_inexact_constructions_kernel>(soup, source);
+    soup = dggvtp::load_soup(path);
   }
   catch(const dggvtp::Input_error&)
   {
@@ -245,8 +266,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   catch(const std::exception& e)
   {
-    fail(std::string("unexpected exception: ") + e.what());
+    fail(std::string("unexpected exception from the loader: ") + e.what());
   }
   std::remove(path.c_str());
+  if(!soup)
+    return 0;
+  try
+  {
+    const std::size_t source = (selector >> 3) % soup->file_vertices;
+    if(selector & 4u)
+      run<CGAL::Simple_cartesian<float>>(*soup, source);
+    else
+      run<CGAL::Exact_predicates_inexact_constructions_kernel>(*soup, source);
+  }
+  catch(const std::invalid_argument& e)
+  {
+    if(!is_window_limit(e))
+      fail(std::string("std::invalid_argument after the solver accepted the input: ") + e.what());
+  }
+  catch(const std::exception& e)
+  {
+    fail(std::string("unexpected exception after the solver accepted the input: ") + e.what());
+  }
   return 0;
 }
