@@ -124,6 +124,15 @@ void warn_unreachable(std::size_t unreachable, std::size_t total, const char* wh
       warn(w);
 }
 
+// a path as an (m, 3) float64 array
+py::array_t<double> polyline_array(const dggvtp::Polyline& line)
+{
+  py::array_t<double> path({py::ssize_t(line.size()), py::ssize_t(3)});
+  if(!line.empty())
+    std::memcpy(path.mutable_data(), line.data(), line.size() * sizeof line[0]);
+  return path;
+}
+
 struct Geodesic_solver
 {
   std::unique_ptr<Solver_interface> solver;
@@ -199,10 +208,7 @@ struct Geodesic_solver
     std::vector<double> lengths;
     for(const auto& [line, length] : paths)
     {
-      py::array_t<double> path({py::ssize_t(line.size()), py::ssize_t(3)});
-      if(!line.empty())
-        std::memcpy(path.mutable_data(), line.data(), line.size() * sizeof line[0]);
-      lines.push_back(path);
+      lines.push_back(polyline_array(line));
       lengths.push_back(length);
     }
     warn_unreachable(dggvtp::count_infinite(lengths), lengths.size(), "paths", q.max_distance);
@@ -530,13 +536,8 @@ PYBIND11_MODULE(_dggvtp, m)
         if(return_paths)
         {
           py::list lines;
-          for(const auto& [line, length] : paths)
-          {
-            py::array_t<double> path({py::ssize_t(line.size()), py::ssize_t(3)});
-            if(!line.empty())
-              std::memcpy(path.mutable_data(), line.data(), line.size() * sizeof line[0]);
-            lines.append(path);
-          }
+          for(const auto& path : paths)
+            lines.append(polyline_array(path.first));
           result.append(lines);
         }
         if(result.size() == 1)
